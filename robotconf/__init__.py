@@ -1,0 +1,41 @@
+"""robotconf: serial-robot kinematics for teaching, from modules or Denavit–Hartenberg rows.
+
+The core (this package's top level) needs only numpy; notebooks, plots and the 3D view
+import their libraries when they are used.
+
+>>> import robotconf as rc
+>>> robot = rc.Robot(
+...     [rc.Module("Rz"), rc.Module("Ry", a=(0, 0, 20)), rc.Module("Ry", a=(30, 0, 0))],
+...     end_effector=(40, 0, 0),
+... )
+>>> robot.end_effector([0, 0, 0])
+array([70.,  0., 20.])
+"""
+
+from ._dh import DH_CONVENTIONS, DHLink, dh_matrix
+from ._errors import InvalidInputError
+from ._geometry import LinkGeometry
+from ._link import JOINT_TYPES, Link
+from ._module import MODULE_KINDS, Module, kind_name, transfer_matrix
+from ._robot import Robot
+from ._validation import check_finite_number, check_joint_values, check_vector3
+
+__version__ = "0.1.0"
+
+__all__ = [
+    "DH_CONVENTIONS",
+    "DHLink",
+    "InvalidInputError",
+    "JOINT_TYPES",
+    "Link",
+    "LinkGeometry",
+    "MODULE_KINDS",
+    "Module",
+    "Robot",
+    "check_finite_number",
+    "check_joint_values",
+    "check_vector3",
+    "dh_matrix",
+    "kind_name",
+    "transfer_matrix",
+]

@@ -1,0 +1,189 @@
+"""Denavit–Hartenberg links, standard and modified (Craig), never guessed."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ._errors import InvalidInputError
+from ._geometry import LinkGeometry
+from ._link import Link
+from ._validation import check_finite_number
+
+__all__ = ["DHLink", "dh_matrix", "DH_CONVENTIONS", "check_convention"]
+
+#: ``standard``: ``A = Rz(θ)·Tz(d)·Tx(a)·Rx(α)`` (paper eq. 9–10);
+#: ``modified`` (Craig): ``A = Rx(α)·Tx(a)·Rz(θ)·Tz(d)``.
+DH_CONVENTIONS = ("standard", "modified")
+_JOINTS = {"R": "R", "REVOLUTE": "R", "P": "P", "PRISMATIC": "P"}
+
+
+def check_convention(convention: Any) -> str:
+    """Return ``convention`` if it is ``"standard"`` or ``"modified"``.
+
+    >>> check_convention("Modified")
+    'modified'
+    >>> check_convention("craig")
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: convention: unknown DH convention 'craig'; allowed: 'standard' ...
+    """
+    allowed = "'standard' (Rz·Tz·Tx·Rx) or 'modified' (Craig: Rx·Tx·Rz·Tz)"
+    if not isinstance(convention, str) or convention.strip().lower() not in DH_CONVENTIONS:
+        raise InvalidInputError("convention", convention, allowed, problem="unknown DH convention")
+    return convention.strip().lower()
+
+
+def _rot_x(alpha: float) -> np.ndarray | None:
+    if alpha == 0.0:
+        return None
+    c, s = np.cos(alpha), np.sin(alpha)
+    return np.array([[1.0, 0.0, 0.0], [0.0, c, -s], [0.0, s, c]])
+
+
+@dataclass(frozen=True)
+class DHLink(Link):
+    """One Denavit–Hartenberg row as a link: ``(θ, d, a, α)`` and a joint type.
+
+    Parameters
+    ----------
+    theta : float
+        Joint angle θ (radians); ``q`` adds to it for a revolute joint.
+    d : float
+        Link offset d (length); ``q`` adds to it for a prismatic joint.
+    a : float
+        Link length a (length).
+    alpha : float
+        Link twist α (radians).
+    joint : {"R", "P"}
+        Revolute (``q`` adds to θ) or prismatic (``q`` adds to d).
+    convention : {"standard", "modified"}
+        ``standard``: ``Rz(θ)·Tz(d)·Tx(a)·Rx(α)``; ``modified`` (Craig):
+        ``Rx(α)·Tx(a)·Rz(θ)·Tz(d)``. Required: there is no default guess in robot
+        constructors, only here, where the name says it.
+    q : float
+        The joint coordinate's own value.
+    name : str, optional
+
+    Examples
+    --------
+    >>> link = DHLink(theta=0, d=0, a=1, alpha=np.pi / 2, joint="R")
+    >>> link.matrix(np.pi / 2).round(12) + 0.0
+    array([[ 0.,  0.,  1.,  0.],
+           [ 1.,  0.,  0.,  1.],
+           [ 0.,  1.,  0.,  0.],
+           [ 0.,  0.,  0.,  1.]])
+    """
+
+    theta: float = 0.0
+    d: float = 0.0
+    a: float = 0.0
+    alpha: float = 0.0
+    joint: str = "R"
+    convention: str = "standard"
+    q: float = 0.0
+    name: str | None = field(default=None)
+
+    def __post_init__(self) -> None:
+        for attribute in ("theta", "d", "a", "alpha", "q"):
+            value = check_finite_number(getattr(self, attribute), attribute)
+            object.__setattr__(self, attribute, value)
+        joint = _JOINTS.get(self.joint.strip().upper()) if isinstance(self.joint, str) else None
+        if joint is None:
+            raise InvalidInputError(
+                "joint", self.joint, "'R' (revolute: q adds to θ) or 'P' (prismatic: q adds to d)"
+            )
+        object.__setattr__(self, "joint", joint)
+        object.__setattr__(self, "convention", check_convention(self.convention))
+        if self.name is not None and not isinstance(self.name, str):
+            raise InvalidInputError("name", self.name, "text or None")
+
+    def __repr__(self) -> str:
+        text = (
+            f"DHLink(theta={self.theta!r}, d={self.d!r}, a={self.a!r}, alpha={self.alpha!r}, "
+            f"joint={self.joint!r}, convention={self.convention!r}"
+        )
+        if self.q != 0.0:
+            text += f", q={self.q!r}"
+        if self.name is not None:
+            text += f", name={self.name!r}"
+        return text + ")"
+
+    @property
+    def joint_type(self) -> str:
+        """``"revolute"`` or ``"prismatic"``."""
+        return "revolute" if self.joint == "R" else "prismatic"
+
+    @property
+    def axis(self) -> str:
+        """The joint axis in the link's own description: always z."""
+        return "z"
+
+    @property
+    def unit(self) -> str:
+        """Unit of ``q``: ``"rad"`` or ``"length"``."""
+        return "rad" if self.joint == "R" else "length"
+
+    def row(self) -> tuple[float, float, float, float, str]:
+        """The DH row ``(theta, d, a, alpha, joint)``."""
+        return (self.theta, self.d, self.a, self.alpha, self.joint)
+
+    def geometry(self) -> LinkGeometry:
+        """Kernel description of the row in its convention."""
+        twist = _rot_x(self.alpha)
+        length = np.array([self.a, 0.0, 0.0]) if self.a != 0.0 else None
+        screw = {"axis": 2, "joint": self.joint, "angle": self.theta, "offset": self.d}
+        if self.convention == "standard":
+            return LinkGeometry(post_translation=length, post_rotation=twist, **screw)
+        # Rx(α)·Tx(a) = [Rx(α) | (a, 0, 0)]: Rx leaves the x axis alone.
+        return LinkGeometry(pre_rotation=twist, pre_translation=length, **screw)
+
+    def with_q(self, q: float) -> DHLink:
+        """A copy with another coordinate value."""
+        return DHLink(
+            self.theta, self.d, self.a, self.alpha, self.joint, self.convention, q, self.name
+        )
+
+    def with_name(self, name: str | None) -> DHLink:
+        """A copy with another display name."""
+        return DHLink(
+            self.theta, self.d, self.a, self.alpha, self.joint, self.convention, self.q, name
+        )
+
+
+def dh_matrix(theta: Any, d: Any, a: Any, alpha: Any, convention: str = "standard") -> np.ndarray:
+    """Denavit–Hartenberg transfer matrix.
+
+    Parameters
+    ----------
+    theta : float or array-like, shape (T,)
+        Joint angle θ (radians).
+    d : float
+        Link offset (length).
+    a : float
+        Link length (length).
+    alpha : float
+        Link twist (radians).
+    convention : {"standard", "modified"}
+        ``standard`` (paper eq. 9–10): ``Rz(θ)·Tz(d)·Tx(a)·Rx(α)``, which multiplies out to
+        ``[[cθ, −sθ cα, sθ sα, a cθ], [sθ, cθ cα, −cθ sα, a sθ], [0, sα, cα, d], [0,0,0,1]]``;
+        ``modified`` (Craig): ``Rx(α)·Tx(a)·Rz(θ)·Tz(d)``.
+
+    Returns
+    -------
+    ndarray, shape (4, 4) or (T, 4, 4)
+
+    Examples
+    --------
+    >>> dh_matrix(np.pi / 2, 0.5, 2.0, 0.0).round(12) + 0.0  # + 0.0 turns -0.0 into 0.0
+    array([[ 0. , -1. ,  0. ,  0. ],
+           [ 1. ,  0. ,  0. ,  2. ],
+           [ 0. ,  0. ,  1. ,  0.5],
+           [ 0. ,  0. ,  0. ,  1. ]])
+    """
+    link = DHLink(theta=0.0, d=d, a=a, alpha=alpha, joint="R", convention=convention)
+    if np.ndim(theta) == 0:
+        return link.matrix(check_finite_number(theta, "theta"))
+    return link.matrix(theta)

@@ -1,0 +1,107 @@
+"""What every link of a chain offers: a 4×4 matrix as a function of q, and its derivatives."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import numpy as np
+
+from ._geometry import LinkGeometry
+from ._kinematics import link_matrices
+from ._validation import check_finite_number
+
+__all__ = ["Link", "JOINT_TYPES"]
+
+#: Joint types a link reports: revolute (q in radians), prismatic (q in length units),
+#: none (the paper's null module, identity) and fixed (a constant offset, no joint).
+JOINT_TYPES = ("revolute", "prismatic", "none", "fixed")
+
+
+def _homogeneous(rotation: np.ndarray | None, translation: np.ndarray | None) -> np.ndarray:
+    matrix = np.eye(4)
+    if rotation is not None:
+        matrix[:3, :3] = rotation
+    if translation is not None:
+        matrix[:3, 3] = translation
+    return matrix
+
+
+class Link:
+    """Base of :class:`~robotconf.Module` and :class:`~robotconf.DHLink`.
+
+    A subclass provides ``q`` (its own coordinate value), ``name``, ``joint_type`` and
+    :meth:`geometry`; everything numeric comes from the shared kinematics kernel.
+    """
+
+    q: float
+    name: str | None
+
+    @property
+    def joint_type(self) -> str:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def geometry(self) -> LinkGeometry:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    @property
+    def is_joint(self) -> bool:
+        """Whether ``q`` moves this link (revolute or prismatic)."""
+        return self.joint_type in ("revolute", "prismatic")
+
+    def _coordinates(self, q: Any) -> tuple[np.ndarray, bool]:
+        if q is None:
+            return np.array([[self.q]]), False
+        if np.ndim(q) == 0:
+            return np.array([[check_finite_number(q, "q")]]), False
+        from ._validation import check_joint_values
+
+        column, _ = check_joint_values(np.asarray(q, dtype=float)[:, np.newaxis], 1)
+        return column, True
+
+    def matrix(self, q: Any = None) -> np.ndarray:
+        """The homogeneous transfer matrix ``A(q)``.
+
+        Parameters
+        ----------
+        q : float or array-like, shape (T,), optional
+            Coordinate value(s): radians for revolute, length for prismatic links.
+            Defaults to the link's own ``q``.
+
+        Returns
+        -------
+        ndarray, shape (4, 4) or (T, 4, 4)
+        """
+        column, batched = self._coordinates(q)
+        out = link_matrices([self.geometry()], column)[:, 0]
+        return out if batched else out[0]
+
+    def matrix_derivative(self, q: Any = None, order: int = 1) -> np.ndarray:
+        """The derivative ``dᵏA/dqᵏ`` of the transfer matrix.
+
+        Uses ``dᵏA/dqᵏ = P · Screw(q) · Gᵏ · Q`` with the joint generator ``G`` (see
+        :class:`~robotconf._geometry.LinkGeometry`); zero for links without joint.
+
+        Parameters
+        ----------
+        q : float or array-like, shape (T,), optional
+            Coordinate value(s); defaults to the link's own ``q``.
+        order : int
+            Derivative order ≥ 1.
+
+        Returns
+        -------
+        ndarray, shape (4, 4) or (T, 4, 4)
+        """
+        if isinstance(order, bool) or not isinstance(order, (int, np.integer)) or order < 1:
+            from ._errors import InvalidInputError
+
+            raise InvalidInputError("order", order, "an integer ≥ 1")
+        column, batched = self._coordinates(q)
+        g = self.geometry()
+        screw = LinkGeometry(axis=g.axis, joint=g.joint, angle=g.angle, offset=g.offset)
+        screw_matrices = link_matrices([screw], column)[:, 0]
+        pre = _homogeneous(g.pre_rotation, g.pre_translation)
+        post = _homogeneous(g.post_rotation, g.post_translation)
+        tail = np.linalg.matrix_power(g.generator(), int(order)) @ post
+        out = pre @ screw_matrices @ tail
+        return out if batched else out[0]

@@ -1,0 +1,207 @@
+"""The paper's module: a movement type, offsets ``a`` and a generalized coordinate ``q``."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from ._errors import InvalidInputError
+from ._geometry import LinkGeometry
+from ._link import Link
+from ._validation import check_finite_number, check_vector3
+
+__all__ = ["Module", "MODULE_KINDS", "kind_name", "transfer_matrix"]
+
+#: Canonical movement types in the paper's order of sub-systems, by code 0–6, then the
+#: offset-only ``fixed`` kind, which is not in the paper and so has no code.
+MODULE_KINDS = ("none", "Rx", "Ry", "Rz", "Tx", "Ty", "Tz", "fixed")
+
+_ALIASES = {name.lower(): name for name in MODULE_KINDS}
+_ALIASES["null"] = "none"
+_ALLOWED = "none (0), Rx (1), Ry (2), Rz (3), Tx (4), Ty (5), Tz (6), fixed"
+
+_JOINT_TYPE = {"none": "none", "fixed": "fixed"}
+_JOINT_TYPE.update({k: "revolute" for k in ("Rx", "Ry", "Rz")})
+_JOINT_TYPE.update({k: "prismatic" for k in ("Tx", "Ty", "Tz")})
+
+
+def kind_name(kind: Any) -> str:
+    """Canonical name of a movement type given by name (any case) or paper code 0–6.
+
+    Parameters
+    ----------
+    kind : str or int
+        ``"none"`` (alias ``"null"``), ``"Rx"``, ``"Ry"``, ``"Rz"``, ``"Tx"``, ``"Ty"``,
+        ``"Tz"``, ``"fixed"``, or the paper's code 0–6.
+
+    Returns
+    -------
+    str
+        One of :data:`MODULE_KINDS`.
+
+    Raises
+    ------
+    InvalidInputError
+        For an unknown name, a code outside 0–6, or another type.
+
+    Examples
+    --------
+    >>> kind_name("rz"), kind_name(2), kind_name("NULL")
+    ('Rz', 'Ry', 'none')
+    >>> kind_name(7)
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: kind: unknown movement code 7; allowed: none (0), Rx (1), ...
+    """
+    if isinstance(kind, str):
+        name = _ALIASES.get(kind.strip().lower())
+        if name is None:
+            raise InvalidInputError("kind", kind, _ALLOWED, problem="unknown movement type")
+        return name
+    if isinstance(kind, (int, np.integer)) and not isinstance(kind, (bool, np.bool_)):
+        if 0 <= int(kind) <= 6:
+            return MODULE_KINDS[int(kind)]
+        raise InvalidInputError("kind", int(kind), _ALLOWED, problem="unknown movement code")
+    raise InvalidInputError("kind", kind, _ALLOWED, problem="expected a name or a code 0-6, got")
+
+
+@dataclass(frozen=True)
+class Module(Link):
+    """One module of a modular serial robot (the paper's "kinematic couple").
+
+    The transfer matrix translates by ``a`` in the parent frame, then moves by ``q``
+    about or along the module's own axis (DESIGN.md §1, paper eq. 11–16). A ``none``
+    module is the identity; a ``fixed`` module is the pure offset ``a``.
+
+    Parameters
+    ----------
+    kind : str or int
+        Movement type: ``"none"``, ``"Rx"``, ``"Ry"``, ``"Rz"``, ``"Tx"``, ``"Ty"``,
+        ``"Tz"`` (any case) or the paper's code 0–6; or ``"fixed"``.
+    a : array-like, shape (3,)
+        Offset ``(ax, ay, az)`` of this module's frame origin in the preceding frame
+        (length units).
+    q : float
+        Generalized coordinate: radians for rotations, length for translations; ignored
+        by ``none`` and ``fixed``.
+    name : str, optional
+        Display name; the robot calls unnamed modules ``M1, M2, …``.
+
+    Raises
+    ------
+    InvalidInputError
+        On an unknown kind, a malformed or non-finite ``a`` or ``q``, or a non-text name.
+
+    Examples
+    --------
+    >>> m = Module("Ry", a=(0, 0, 20))
+    >>> m
+    Module('Ry', a=(0.0, 0.0, 20.0))
+    >>> m.code, m.joint_type, m.axis
+    (2, 'revolute', 'y')
+    >>> m.matrix(np.pi / 2).round(12)
+    array([[ 0.,  0.,  1.,  0.],
+           [ 0.,  1.,  0.,  0.],
+           [-1.,  0.,  0., 20.],
+           [ 0.,  0.,  0.,  1.]])
+    """
+
+    kind: str
+    a: tuple[float, float, float] = (0.0, 0.0, 0.0)
+    q: float = 0.0
+    name: str | None = field(default=None)
+
+    def __post_init__(self) -> None:
+        object.__setattr__(self, "kind", kind_name(self.kind))
+        object.__setattr__(self, "a", check_vector3(self.a, "a"))
+        object.__setattr__(self, "q", check_finite_number(self.q, "q"))
+        if self.name is not None and not isinstance(self.name, str):
+            raise InvalidInputError("name", self.name, "text or None")
+
+    def __repr__(self) -> str:
+        parts = [repr(self.kind)]
+        if self.a != (0.0, 0.0, 0.0):
+            parts.append(f"a={self.a!r}")
+        if self.q != 0.0:
+            parts.append(f"q={self.q!r}")
+        if self.name is not None:
+            parts.append(f"name={self.name!r}")
+        return f"Module({', '.join(parts)})"
+
+    @property
+    def code(self) -> int | None:
+        """The paper's movement code 0–6 (``None`` for ``fixed``, which the paper lacks)."""
+        return None if self.kind == "fixed" else MODULE_KINDS.index(self.kind)
+
+    @property
+    def joint_type(self) -> str:
+        """``"revolute"``, ``"prismatic"``, ``"none"`` or ``"fixed"``."""
+        return _JOINT_TYPE[self.kind]
+
+    @property
+    def axis(self) -> str | None:
+        """``"x"``, ``"y"`` or ``"z"`` for a joint; ``None`` for ``none`` and ``fixed``."""
+        return self.kind[1].lower() if self.is_joint else None
+
+    @property
+    def unit(self) -> str:
+        """Unit of ``q``: ``"rad"`` for rotations, ``"length"`` for translations, else ``""``."""
+        return {"revolute": "rad", "prismatic": "length"}.get(self.joint_type, "")
+
+    def geometry(self) -> LinkGeometry:
+        """Kernel description: ``Trans(a) · Rot/Trans_axis(q)``."""
+        if self.kind == "none":
+            return LinkGeometry()
+        offset = np.array(self.a) if any(self.a) else None
+        if self.kind == "fixed":
+            return LinkGeometry(pre_translation=offset)
+        axis = "xyz".index(self.kind[1].lower())
+        joint = "R" if self.kind[0] == "R" else "P"
+        return LinkGeometry(pre_translation=offset, axis=axis, joint=joint)
+
+    def with_q(self, q: float) -> Module:
+        """A copy with another coordinate value."""
+        return Module(self.kind, self.a, q, self.name)
+
+    def with_a(self, a: Any) -> Module:
+        """A copy with other offsets."""
+        return Module(self.kind, a, self.q, self.name)
+
+    def with_kind(self, kind: Any) -> Module:
+        """A copy with another movement type (offsets, q and name kept)."""
+        return Module(kind, self.a, self.q, self.name)
+
+    def with_name(self, name: str | None) -> Module:
+        """A copy with another display name."""
+        return Module(self.kind, self.a, self.q, name)
+
+
+def transfer_matrix(kind: Any, q: Any = 0.0, a: Any = (0.0, 0.0, 0.0)) -> np.ndarray:
+    """Transfer matrix of a module of movement type ``kind`` (DESIGN.md §1 table).
+
+    Parameters
+    ----------
+    kind : str or int
+        Movement type name or paper code 0–6 (see :class:`Module`).
+    q : float or array-like, shape (T,)
+        Generalized coordinate(s): radians for rotations, length for translations.
+    a : array-like, shape (3,)
+        Offsets ``(ax, ay, az)`` (length units).
+
+    Returns
+    -------
+    ndarray, shape (4, 4) or (T, 4, 4)
+
+    Examples
+    --------
+    >>> transfer_matrix("Tx", 5, a=(1, 2, 3))
+    array([[1., 0., 0., 6.],
+           [0., 1., 0., 2.],
+           [0., 0., 1., 3.],
+           [0., 0., 0., 1.]])
+    >>> transfer_matrix(3, [0.0, np.pi]).shape
+    (2, 4, 4)
+    """
+    return Module(kind, a).matrix(q)

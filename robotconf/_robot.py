@@ -1,0 +1,432 @@
+"""A serial robot: an ordered chain of links plus an end-effector point."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable, Mapping, Sequence
+from typing import Any
+
+import numpy as np
+
+from ._dh import DHLink, check_convention
+from ._errors import InvalidInputError
+from ._geometry import LinkGeometry
+from ._kinematics import chain_origins, chain_point, chain_point_pose, chain_poses, link_matrices
+from ._link import Link
+from ._validation import check_joint_values, check_vector3
+
+__all__ = ["Robot"]
+
+_DH_FIELDS = ("theta", "d", "a", "alpha", "joint")
+
+
+def _check_links(modules: Any) -> tuple[Link, ...]:
+    if isinstance(modules, (str, bytes, Link)) or not isinstance(modules, Iterable):
+        raise InvalidInputError(
+            "modules", modules, "a list of Module or DHLink objects", problem="not a list:"
+        )
+    links = tuple(modules)
+    if not links:
+        raise InvalidInputError("modules", [], "at least one Module or DHLink", problem="empty:")
+    for i, link in enumerate(links):
+        if not isinstance(link, Link):
+            raise InvalidInputError(
+                f"modules[{i}]", link, "a Module or DHLink", problem="not a link:"
+            )
+    return links
+
+
+def _check_index(index: Any, size: int, field: str = "index") -> int:
+    allowed = f"an integer from 0 to {size - 1}"
+    if isinstance(index, (bool, np.bool_)) or not isinstance(index, (int, np.integer)):
+        raise InvalidInputError(field, index, allowed, problem="not an integer:")
+    if not 0 <= int(index) < size:
+        raise InvalidInputError(field, int(index), allowed, problem="out of range:")
+    return int(index)
+
+
+def _dh_link(row: Any, convention: str, index: int) -> Link:
+    if isinstance(row, DHLink):
+        return row
+    field = f"rows[{index}]"
+    allowed = "(theta, d, a, alpha, joint) with joint 'R' or 'P', or a dict with those keys"
+    if isinstance(row, Mapping):
+        unknown = set(row) - {*_DH_FIELDS, "q", "name"}
+        if unknown:
+            raise InvalidInputError(field, row, allowed, problem=f"unknown keys {sorted(unknown)}:")
+        missing = [key for key in _DH_FIELDS if key not in row]
+        if missing:
+            raise InvalidInputError(field, row, allowed, problem=f"missing {missing}:")
+        values = dict(row)
+    elif isinstance(row, (str, bytes)) or not isinstance(row, Sequence) or len(row) != 5:
+        raise InvalidInputError(field, row, allowed, problem="expected 5 entries, got")
+    else:
+        values = dict(zip(_DH_FIELDS, row, strict=True))
+    try:
+        return DHLink(convention=convention, **values)
+    except InvalidInputError as error:
+        raise error.within(field) from None
+
+
+class Robot:
+    """A serial robot: links (modules or DH rows) and an end-effector point.
+
+    Immutable: every ``with_…`` method returns a new robot, so an editor can always keep
+    the last valid one.
+
+    Parameters
+    ----------
+    modules : sequence of Module or DHLink, length n ≥ 1
+        The chain from the base ``[T0]`` outwards; modules and DH links may be mixed.
+    end_effector : array-like, shape (3,)
+        The end-effector point ``P = (Px, Py, Pz)`` in the last module's frame (length).
+    active : int, optional
+        The paper's "number of active modules" ``k`` (1 ≤ k ≤ n): modules after the k-th
+        act as identity. Default: all.
+    name : str, optional
+
+    Raises
+    ------
+    InvalidInputError
+        For an empty or non-link module list, a bad end-effector point, ``active`` out
+        of range or a non-text name.
+
+    Examples
+    --------
+    The paper's validation robot R_zR_yR_y (l1 = 20, l2 = 30, l3 = 40):
+
+    >>> from robotconf import Module
+    >>> robot = Robot(
+    ...     [Module("Rz"), Module("Ry", a=(0, 0, 20)), Module("Ry", a=(30, 0, 0))],
+    ...     end_effector=(40, 0, 0),
+    ... )
+    >>> robot.frame_origins([0, 0, 0])
+    array([[ 0.,  0.,  0.],
+           [ 0.,  0., 20.],
+           [30.,  0., 20.]])
+    >>> robot.end_effector([0, 0, 0])
+    array([70.,  0., 20.])
+    >>> robot.frame_poses(np.zeros((1000, 3))).shape
+    (1000, 3, 4, 4)
+    """
+
+    __slots__ = ("_links", "_end_effector", "_active", "_name", "_geometry")
+
+    def __init__(
+        self,
+        modules: Sequence[Link],
+        end_effector: Any = (0.0, 0.0, 0.0),
+        active: int | None = None,
+        name: str | None = None,
+    ):
+        links = _check_links(modules)
+        point = check_vector3(end_effector, "end_effector")
+        if active is not None:
+            allowed = f"an integer from 1 to {len(links)} (the number of modules), or None for all"
+            if isinstance(active, (bool, np.bool_)) or not isinstance(active, (int, np.integer)):
+                raise InvalidInputError("active", active, allowed, problem="not an integer:")
+            if not 1 <= int(active) <= len(links):
+                raise InvalidInputError("active", int(active), allowed, problem="out of range:")
+            active = int(active)
+        if name is not None and not isinstance(name, str):
+            raise InvalidInputError("name", name, "text or None")
+        self._links = links
+        self._end_effector = point
+        self._active = active
+        self._name = name
+        count = self.active
+        self._geometry: tuple[LinkGeometry | None, ...] = tuple(
+            link.geometry() if i < count else None for i, link in enumerate(links)
+        )
+
+    # -- construction -------------------------------------------------------------------
+
+    @classmethod
+    def from_dh(
+        cls,
+        rows: Iterable[Any],
+        convention: str = "standard",
+        end_effector: Any = (0.0, 0.0, 0.0),
+        name: str | None = None,
+    ) -> Robot:
+        """A robot from a Denavit–Hartenberg table.
+
+        Parameters
+        ----------
+        rows : iterable of (theta, d, a, alpha, joint), dicts with those keys, or DHLink
+            Angles in radians, lengths in length units; ``joint`` is ``"R"`` (q adds to θ)
+            or ``"P"`` (q adds to d). Dict rows may also give ``q`` and ``name``.
+        convention : {"standard", "modified"}
+            ``standard``: ``Rz(θ)·Tz(d)·Tx(a)·Rx(α)``; ``modified`` (Craig):
+            ``Rx(α)·Tx(a)·Rz(θ)·Tz(d)``. Applies to every tuple or dict row.
+        end_effector : array-like, shape (3,)
+            Point in the last frame.
+        name : str, optional
+
+        Returns
+        -------
+        Robot
+
+        Examples
+        --------
+        A planar 2R arm with unit links at q = (90°, 0):
+
+        >>> arm = Robot.from_dh([(0, 0, 1, 0, "R"), (0, 0, 1, 0, "R")])
+        >>> arm.end_effector([np.pi / 2, 0]).round(12)
+        array([0., 2., 0.])
+        """
+        convention = check_convention(convention)
+        if isinstance(rows, (str, bytes, Mapping)) or not isinstance(rows, Iterable):
+            raise InvalidInputError(
+                "rows", rows, "a list of DH rows (theta, d, a, alpha, joint)", problem="not a list:"
+            )
+        links = [_dh_link(row, convention, i) for i, row in enumerate(rows)]
+        if not links:
+            raise InvalidInputError("rows", [], "at least one DH row", problem="empty:")
+        return cls(links, end_effector=end_effector, name=name)
+
+    def _replace(self, **changes: Any) -> Robot:
+        values = {
+            "modules": self._links,
+            "end_effector": self._end_effector,
+            "active": self._active,
+            "name": self._name,
+        }
+        values.update(changes)
+        return Robot(**values)
+
+    def with_q(self, q: Any) -> Robot:
+        """A copy whose modules hold the coordinates ``q``, shape (n,)."""
+        values, batched = check_joint_values(q, self.n, self.coordinate_names)
+        if batched:
+            raise InvalidInputError(
+                "q", q, f"one configuration of shape ({self.n},)", problem="got a trajectory:"
+            )
+        links = [link.with_q(float(v)) for link, v in zip(self._links, values[0], strict=True)]  # type: ignore[attr-defined]
+        return self._replace(modules=links)
+
+    def with_module(self, index: int, module: Link) -> Robot:
+        """A copy with module ``index`` (0-based) replaced."""
+        i = _check_index(index, self.n)
+        links = list(self._links)
+        links[i] = module
+        return self._replace(modules=links)
+
+    def with_inserted(self, index: int, module: Link) -> Robot:
+        """A copy with ``module`` inserted before position ``index`` (``n`` appends)."""
+        i = _check_index(index, self.n + 1)
+        links = list(self._links)
+        links.insert(i, module)
+        active = None if self._active is None else self._active + (i < self._active)
+        return self._replace(modules=links, active=active)
+
+    def with_appended(self, module: Link) -> Robot:
+        """A copy with ``module`` added at the end of the chain."""
+        return self.with_inserted(self.n, module)
+
+    def with_removed(self, index: int) -> Robot:
+        """A copy without module ``index``; a robot keeps at least one module."""
+        i = _check_index(index, self.n)
+        if self.n == 1:
+            raise InvalidInputError(
+                "index",
+                i,
+                "removing only when more than one module remains",
+                problem="cannot remove the last module:",
+            )
+        links = list(self._links)
+        del links[i]
+        active = self._active
+        if active is not None:
+            active = max(1, min(active - (i < active), len(links)))
+        return self._replace(modules=links, active=active)
+
+    def with_moved(self, index: int, new_index: int) -> Robot:
+        """A copy with module ``index`` moved to ``new_index`` (move up/down in an editor)."""
+        i = _check_index(index, self.n)
+        j = _check_index(new_index, self.n, field="new_index")
+        links = list(self._links)
+        links.insert(j, links.pop(i))
+        return self._replace(modules=links)
+
+    def with_end_effector(self, point: Any) -> Robot:
+        """A copy with another end-effector point ``(Px, Py, Pz)``."""
+        return self._replace(end_effector=point)
+
+    def with_active(self, active: int | None) -> Robot:
+        """A copy with another number of active modules (``None``: all)."""
+        return self._replace(active=active)
+
+    def with_name(self, name: str | None) -> Robot:
+        """A copy with another name."""
+        return self._replace(name=name)
+
+    # -- description --------------------------------------------------------------------
+
+    @property
+    def modules(self) -> tuple[Link, ...]:
+        """The links, base first."""
+        return self._links
+
+    @property
+    def n(self) -> int:
+        """Number of modules (and of generalized coordinates)."""
+        return len(self._links)
+
+    @property
+    def active(self) -> int:
+        """Number of active modules: modules after this many act as identity."""
+        return self.n if self._active is None else self._active
+
+    @property
+    def name(self) -> str | None:
+        """The robot's name, if it has one."""
+        return self._name
+
+    @property
+    def end_effector_point(self) -> np.ndarray:
+        """The end-effector point ``(Px, Py, Pz)`` in the last frame, shape (3,)."""
+        return np.array(self._end_effector)
+
+    @property
+    def q(self) -> np.ndarray:
+        """The modules' own coordinates, shape (n,)."""
+        return np.array([link.q for link in self._links])
+
+    @property
+    def module_names(self) -> tuple[str, ...]:
+        """Display names: a module's own name, else ``M1, M2, …`` as in the paper."""
+        return tuple(link.name or f"M{i + 1}" for i, link in enumerate(self._links))
+
+    @property
+    def coordinate_names(self) -> tuple[str, ...]:
+        """Generalized coordinate names ``q1, q2, …``."""
+        return tuple(f"q{i + 1}" for i in range(self.n))
+
+    @property
+    def joint_types(self) -> tuple[str, ...]:
+        """Each link's joint type: revolute, prismatic, none or fixed."""
+        return tuple(link.joint_type for link in self._links)
+
+    def geometry(self) -> tuple[LinkGeometry | None, ...]:
+        """Kernel descriptions of the links; ``None`` where a module is inactive."""
+        return self._geometry
+
+    def __eq__(self, other: object) -> bool:
+        if not isinstance(other, Robot):
+            return NotImplemented
+        return (
+            self._links == other._links
+            and self._end_effector == other._end_effector
+            and self.active == other.active
+            and self._name == other._name
+        )
+
+    def __hash__(self) -> int:
+        return hash((self._links, self._end_effector, self.active, self._name))
+
+    def __repr__(self) -> str:
+        inner = ",\n".join(f"    {link!r}" for link in self._links)
+        text = f"Robot([\n{inner},\n], end_effector={self._end_effector!r}"
+        if self._active is not None:
+            text += f", active={self._active!r}"
+        if self._name is not None:
+            text += f", name={self._name!r}"
+        return text + ")"
+
+    def __str__(self) -> str:
+        title = self._name or "Robot"
+        lines = [f"{title}: {self.n} modules, {self.active} active, EE = {self._end_effector}"]
+        for i, (label, link) in enumerate(zip(self.module_names, self._links, strict=True)):
+            state = "" if i < self.active else "  (inactive)"
+            lines.append(f"  {label}: {link!r}{state}")
+        return "\n".join(lines)
+
+    def _repr_pretty_(self, printer: Any, cycle: bool) -> None:
+        printer.text(str(self) if not cycle else "Robot(...)")
+
+    # -- kinematics ---------------------------------------------------------------------
+
+    def _coordinates(self, q: Any) -> tuple[np.ndarray, bool]:
+        if q is None:
+            return self.q[np.newaxis, :], False
+        return check_joint_values(q, self.n, self.coordinate_names)
+
+    def transfer_matrices(self, q: Any = None) -> np.ndarray:
+        """Each module's transfer matrix ``A_i(q_i)`` (identity when inactive).
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (T, n), optional
+            Coordinates (radians for rotations, length for translations); default: the
+            modules' own ``q``.
+
+        Returns
+        -------
+        ndarray, shape (n, 4, 4) or (T, n, 4, 4)
+        """
+        values, batched = self._coordinates(q)
+        out = link_matrices(self._geometry, values)
+        return out if batched else out[0]
+
+    def frame_poses(self, q: Any = None) -> np.ndarray:
+        """Cumulative matrices ``M_i = A_1·A_2⋯A_i``: each module frame in the base frame.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (T, n), optional
+            Coordinates; default: the modules' own ``q``.
+
+        Returns
+        -------
+        ndarray, shape (n, 4, 4) or (T, n, 4, 4)
+            Vectorized over ``T`` (no Python loop over samples).
+        """
+        values, batched = self._coordinates(q)
+        out = chain_poses(self._geometry, values)
+        return out if batched else out[0]
+
+    def frame_origins(self, q: Any = None) -> np.ndarray:
+        """Origins of the module frames in the base frame (where the paper draws spheres).
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (T, n), optional
+
+        Returns
+        -------
+        ndarray, shape (n, 3) or (T, n, 3)
+            Length units; computed without building 4×4 stacks.
+        """
+        values, batched = self._coordinates(q)
+        out = chain_origins(self._geometry, values)
+        return out if batched else out[0]
+
+    def end_effector(self, q: Any = None) -> np.ndarray:
+        """End-effector position ``p_EE = M_n · [Px, Py, Pz, 1]ᵀ`` in the base frame.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (T, n), optional
+
+        Returns
+        -------
+        ndarray, shape (3,) or (T, 3)
+        """
+        values, batched = self._coordinates(q)
+        out = chain_point(self._geometry, values, np.array(self._end_effector))
+        return out if batched else out[0]
+
+    def end_effector_pose(self, q: Any = None) -> np.ndarray:
+        """Pose of the end-effector: ``M_n`` with the EE point as its origin.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (T, n), optional
+
+        Returns
+        -------
+        ndarray, shape (4, 4) or (T, 4, 4)
+        """
+        values, batched = self._coordinates(q)
+        out = chain_point_pose(self._geometry, values, np.array(self._end_effector))
+        return out if batched else out[0]
