@@ -61,8 +61,8 @@ class DHLink(Link):
         Revolute (``q`` adds to θ) or prismatic (``q`` adds to d).
     convention : {"standard", "modified"}
         ``standard``: ``Rz(θ)·Tz(d)·Tx(a)·Rx(α)``; ``modified`` (Craig):
-        ``Rx(α)·Tx(a)·Rz(θ)·Tz(d)``. Required: there is no default guess in robot
-        constructors, only here, where the name says it.
+        ``Rx(α)·Tx(a)·Rz(θ)·Tz(d)``. The default is the paper's (eq. 9); the convention
+        is always part of ``repr``, so a printed link never hides which one it uses.
     q : float
         The joint coordinate's own value.
     name : str, optional
@@ -71,10 +71,10 @@ class DHLink(Link):
     --------
     >>> link = DHLink(theta=0, d=0, a=1, alpha=np.pi / 2, joint="R")
     >>> link.matrix(np.pi / 2).round(12) + 0.0
-    array([[ 0.,  0.,  1.,  0.],
-           [ 1.,  0.,  0.,  1.],
-           [ 0.,  1.,  0.,  0.],
-           [ 0.,  0.,  0.,  1.]])
+    array([[0., 0., 1., 0.],
+           [1., 0., 0., 1.],
+           [0., 1., 0., 0.],
+           [0., 0., 0., 1.]])
     """
 
     theta: float = 0.0
