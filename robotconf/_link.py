@@ -6,9 +6,10 @@ from typing import Any
 
 import numpy as np
 
+from ._errors import InvalidInputError
 from ._geometry import LinkGeometry
 from ._kinematics import link_matrices
-from ._validation import check_finite_number
+from ._validation import check_finite_number, check_joint_values
 
 __all__ = ["Link", "JOINT_TYPES"]
 
@@ -53,9 +54,14 @@ class Link:
             return np.array([[self.q]]), False
         if np.ndim(q) == 0:
             return np.array([[check_finite_number(q, "q")]]), False
-        from ._validation import check_joint_values
-
-        column, _ = check_joint_values(np.asarray(q, dtype=float)[:, np.newaxis], 1)
+        if np.ndim(q) != 1:
+            raise InvalidInputError(
+                "q",
+                q,
+                "one number, or a 1-D array of T numbers",
+                problem=f"expected a number or shape (T,), got {np.shape(q)}:",
+            )
+        column, _ = check_joint_values(np.asarray(q)[:, np.newaxis], 1)
         return column, True
 
     def matrix(self, q: Any = None) -> np.ndarray:
@@ -93,8 +99,6 @@ class Link:
         ndarray, shape (4, 4) or (T, 4, 4)
         """
         if isinstance(order, bool) or not isinstance(order, (int, np.integer)) or order < 1:
-            from ._errors import InvalidInputError
-
             raise InvalidInputError("order", order, "an integer ≥ 1")
         column, batched = self._coordinates(q)
         g = self.geometry()
