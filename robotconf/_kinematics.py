@@ -24,6 +24,7 @@ from collections.abc import Callable, Iterator, Sequence
 
 import numpy as np
 
+from ._errors import InvalidInputError
 from ._geometry import LinkGeometry
 
 __all__ = [
@@ -98,10 +99,11 @@ class _Plan:
         """Fill cos, sin (shape (m, B)) for every revolute link of one block."""
         if not self.revolute:
             return
-        angles = q_t[self.revolute]  # fancy indexing: a fresh (m, B) array
+        # Gather the angles into ``sin``; cos_sin works in place element by element.
+        np.take(q_t, self.revolute, axis=0, out=sin)
         if self.has_angles:
-            angles += self.angles[:, np.newaxis]
-        cos_sin(angles, cos, sin)
+            sin += self.angles[:, np.newaxis]
+        cos_sin(sin, cos, sin)
 
 
 class _Scratch:
@@ -269,12 +271,14 @@ def _write_poses(out: np.ndarray) -> Emit:
 def _output(out: np.ndarray | None, shape: tuple[int, ...]) -> np.ndarray:
     if out is None:
         return np.empty(shape)
-    if out.shape != shape or out.dtype != np.float64:
-        from ._errors import InvalidInputError
-
-        raise InvalidInputError(
-            "out", f"array of shape {out.shape} and dtype {out.dtype}", f"float64, shape {shape}"
+    if not isinstance(out, np.ndarray) or out.shape != shape or out.dtype != np.float64:
+        described = (
+            f"array of shape {out.shape} and dtype {out.dtype}"
+            if isinstance(out, np.ndarray)
+            else type(out).__name__
         )
+        allowed = f"a writable float64 array of shape {shape} (or None)"
+        raise InvalidInputError("out", described, allowed, problem="wrong output:")
     return out
 
 

@@ -351,7 +351,15 @@ class Robot:
             return self.q[np.newaxis, :], False
         return check_joint_values(q, self.n, self.coordinate_names)
 
-    def transfer_matrices(self, q: Any = None) -> np.ndarray:
+    def _compute(self, kernel: Any, q: Any, out: np.ndarray | None, *args: Any) -> np.ndarray:
+        values, batched = self._coordinates(q)
+        if out is not None and not batched:
+            # A single configuration writes into out as a one-sample batch.
+            out = out[np.newaxis] if isinstance(out, np.ndarray) else out
+        result = kernel(self._geometry, values, *args, out=out)
+        return result if batched else result[0]
+
+    def transfer_matrices(self, q: Any = None, *, out: np.ndarray | None = None) -> np.ndarray:
         """Each module's transfer matrix ``A_i(q_i)`` (identity when inactive).
 
         Parameters
@@ -359,74 +367,75 @@ class Robot:
         q : array-like, shape (n,) or (T, n), optional
             Coordinates (radians for rotations, length for translations); default: the
             modules' own ``q``.
+        out : ndarray, shape (n, 4, 4) or (T, n, 4, 4), optional
+            Preallocated float64 result, e.g. reused across the frames of an animation.
 
         Returns
         -------
         ndarray, shape (n, 4, 4) or (T, n, 4, 4)
         """
-        values, batched = self._coordinates(q)
-        out = link_matrices(self._geometry, values)
-        return out if batched else out[0]
+        return self._compute(link_matrices, q, out)
 
-    def frame_poses(self, q: Any = None) -> np.ndarray:
+    def frame_poses(self, q: Any = None, *, out: np.ndarray | None = None) -> np.ndarray:
         """Cumulative matrices ``M_i = A_1·A_2⋯A_i``: each module frame in the base frame.
 
         Parameters
         ----------
         q : array-like, shape (n,) or (T, n), optional
             Coordinates; default: the modules' own ``q``.
+        out : ndarray, shape (n, 4, 4) or (T, n, 4, 4), optional
+            Preallocated float64 result.
 
         Returns
         -------
         ndarray, shape (n, 4, 4) or (T, n, 4, 4)
             Vectorized over ``T`` (no Python loop over samples).
         """
-        values, batched = self._coordinates(q)
-        out = chain_poses(self._geometry, values)
-        return out if batched else out[0]
+        return self._compute(chain_poses, q, out)
 
-    def frame_origins(self, q: Any = None) -> np.ndarray:
+    def frame_origins(self, q: Any = None, *, out: np.ndarray | None = None) -> np.ndarray:
         """Origins of the module frames in the base frame (where the paper draws spheres).
 
         Parameters
         ----------
         q : array-like, shape (n,) or (T, n), optional
+        out : ndarray, shape (n, 3) or (T, n, 3), optional
+            Preallocated float64 result.
 
         Returns
         -------
         ndarray, shape (n, 3) or (T, n, 3)
             Length units; computed without building 4×4 stacks.
         """
-        values, batched = self._coordinates(q)
-        out = chain_origins(self._geometry, values)
-        return out if batched else out[0]
+        return self._compute(chain_origins, q, out)
 
-    def end_effector(self, q: Any = None) -> np.ndarray:
+    def end_effector(self, q: Any = None, *, out: np.ndarray | None = None) -> np.ndarray:
         """End-effector position ``p_EE = M_n · [Px, Py, Pz, 1]ᵀ`` in the base frame.
 
         Parameters
         ----------
         q : array-like, shape (n,) or (T, n), optional
+        out : ndarray, shape (3,) or (T, 3), optional
+            Preallocated float64 result.
 
         Returns
         -------
         ndarray, shape (3,) or (T, 3)
+            Computed without building 4×4 stacks.
         """
-        values, batched = self._coordinates(q)
-        out = chain_point(self._geometry, values, np.array(self._end_effector))
-        return out if batched else out[0]
+        return self._compute(chain_point, q, out, np.array(self._end_effector))
 
-    def end_effector_pose(self, q: Any = None) -> np.ndarray:
+    def end_effector_pose(self, q: Any = None, *, out: np.ndarray | None = None) -> np.ndarray:
         """Pose of the end-effector: ``M_n`` with the EE point as its origin.
 
         Parameters
         ----------
         q : array-like, shape (n,) or (T, n), optional
+        out : ndarray, shape (4, 4) or (T, 4, 4), optional
+            Preallocated float64 result.
 
         Returns
         -------
         ndarray, shape (4, 4) or (T, 4, 4)
         """
-        values, batched = self._coordinates(q)
-        out = chain_point_pose(self._geometry, values, np.array(self._end_effector))
-        return out if batched else out[0]
+        return self._compute(chain_point_pose, q, out, np.array(self._end_effector))

@@ -157,8 +157,18 @@ def test_out_parameter_reuses_memory(paper_robot, rng):
     result = chain_poses(paper_robot.geometry(), q, out=out)
     assert result is out
     assert_transform_close(out, paper_robot.frame_poses(q))
-    with pytest.raises(ValueError, match=r"out: .*float64, shape \(50, 3, 4, 4\)"):
+    with pytest.raises(
+        ValueError, match=r"out: wrong output: .*float64 array of shape \(50, 3, 4, 4\)"
+    ):
         chain_poses(paper_robot.geometry(), q, out=np.empty((50, 3, 4, 3)))
+    with pytest.raises(ValueError, match=r"out: wrong output: 'list'"):
+        paper_robot.end_effector(q, out=[0, 0, 0])
+    single = np.empty((3, 4, 4))
+    paper_robot.frame_poses([0, 0, 0], out=single)
+    np.testing.assert_array_equal(single[2, :3, 3], [30, 0, 20])
+    ee = np.empty((50, 3))
+    assert paper_robot.end_effector(q, out=ee) is ee
+    np.testing.assert_allclose(ee, paper_robot.end_effector(q), atol=0)
 
 
 @pytest.mark.parametrize("block_size", [1, 3, 64])
