@@ -134,11 +134,24 @@ class DHLink(Link):
         """Kernel description of the row in its convention."""
         twist = _rot_x(self.alpha)
         length = np.array([self.a, 0.0, 0.0]) if self.a != 0.0 else None
-        screw = {"axis": 2, "joint": self.joint, "angle": self.theta, "offset": self.d}
         if self.convention == "standard":
-            return LinkGeometry(post_translation=length, post_rotation=twist, **screw)
+            return LinkGeometry(
+                axis=2,
+                joint=self.joint,
+                angle=self.theta,
+                offset=self.d,
+                post_translation=length,
+                post_rotation=twist,
+            )
         # Rx(α)·Tx(a) = [Rx(α) | (a, 0, 0)]: Rx leaves the x axis alone.
-        return LinkGeometry(pre_rotation=twist, pre_translation=length, **screw)
+        return LinkGeometry(
+            pre_rotation=twist,
+            pre_translation=length,
+            axis=2,
+            joint=self.joint,
+            angle=self.theta,
+            offset=self.d,
+        )
 
     def with_q(self, q: float) -> DHLink:
         """A copy with another coordinate value."""

@@ -185,14 +185,12 @@ class Robot:
         return cls(links, end_effector=end_effector, name=name)
 
     def _replace(self, **changes: Any) -> Robot:
-        values = {
-            "modules": self._links,
-            "end_effector": self._end_effector,
-            "active": self._active,
-            "name": self._name,
-        }
-        values.update(changes)
-        return Robot(**values)
+        return Robot(
+            changes.get("modules", self._links),
+            end_effector=changes.get("end_effector", self._end_effector),
+            active=changes.get("active", self._active),
+            name=changes.get("name", self._name),
+        )
 
     def with_q(self, q: Any) -> Robot:
         """A copy whose modules hold the coordinates ``q``, shape (n,)."""
