@@ -76,6 +76,12 @@ class Link:
         Returns
         -------
         ndarray, shape (4, 4) or (T, 4, 4)
+
+        Examples
+        --------
+        >>> from robotconf import Module
+        >>> Module("Ty", a=(0, 1, 0)).matrix([0.0, 2.5])[:, 1, 3]
+        array([1. , 3.5])
         """
         column, batched = self._coordinates(q)
         out = link_matrices([self.geometry()], column)[:, 0]
@@ -97,6 +103,16 @@ class Link:
         Returns
         -------
         ndarray, shape (4, 4) or (T, 4, 4)
+
+        Examples
+        --------
+        The first derivative of Rx at q = 0 is the generator of rotations about x:
+
+        >>> from robotconf import Module
+        >>> Module("Rx").matrix_derivative(0.0)[:3, :3]
+        array([[ 0.,  0.,  0.],
+               [ 0.,  0., -1.],
+               [ 0.,  1.,  0.]])
         """
         if isinstance(order, bool) or not isinstance(order, (int, np.integer)) or order < 1:
             raise InvalidInputError("order", order, "an integer ≥ 1")

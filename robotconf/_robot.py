@@ -193,7 +193,13 @@ class Robot:
         )
 
     def with_q(self, q: Any) -> Robot:
-        """A copy whose modules hold the coordinates ``q``, shape (n,)."""
+        """A copy whose modules hold the coordinates ``q``, shape (n,).
+
+        >>> from robotconf import Module
+        >>> robot = Robot([Module("Rz"), Module("Tz")]).with_q([0.5, 2.0])
+        >>> robot.q
+        array([0.5, 2. ])
+        """
         values, batched = check_joint_values(q, self.n, self.coordinate_names)
         if batched:
             raise InvalidInputError(
@@ -371,6 +377,16 @@ class Robot:
         Returns
         -------
         ndarray, shape (n, 4, 4) or (T, n, 4, 4)
+
+        Examples
+        --------
+        >>> from robotconf import Module
+        >>> robot = Robot([Module("Tz", a=(1, 0, 0)), Module("Rz")])
+        >>> robot.transfer_matrices([0.5, 0.0])[0]
+        array([[1. , 0. , 0. , 1. ],
+               [0. , 1. , 0. , 0. ],
+               [0. , 0. , 1. , 0.5],
+               [0. , 0. , 0. , 1. ]])
         """
         return self._compute(link_matrices, q, out)
 
@@ -388,6 +404,21 @@ class Robot:
         -------
         ndarray, shape (n, 4, 4) or (T, n, 4, 4)
             Vectorized over ``T`` (no Python loop over samples).
+
+        Examples
+        --------
+        A slide along x followed by a quarter turn about z: the second frame sits where the
+        slide put it, with its x axis along the base y axis.
+
+        >>> from robotconf import Module
+        >>> robot = Robot([Module("Tx"), Module("Rz", a=(0, 0, 1))])
+        >>> robot.frame_poses([2.0, np.pi / 2])[1].round(12) + 0.0
+        array([[ 0., -1.,  0.,  2.],
+               [ 1.,  0.,  0.,  0.],
+               [ 0.,  0.,  1.,  1.],
+               [ 0.,  0.,  0.,  1.]])
+        >>> robot.frame_poses(np.zeros((500, 2))).shape
+        (500, 2, 4, 4)
         """
         return self._compute(chain_poses, q, out)
 
@@ -420,6 +451,13 @@ class Robot:
         -------
         ndarray, shape (3,) or (T, 3)
             Computed without building 4×4 stacks.
+
+        Examples
+        --------
+        >>> from robotconf import Module
+        >>> arm = Robot([Module("Rz"), Module("Rz", a=(1, 0, 0))], end_effector=(1, 0, 0))
+        >>> arm.end_effector([np.pi / 2, -np.pi / 2]).round(12) + 0.0
+        array([1., 1., 0.])
         """
         return self._compute(chain_point, q, out, np.array(self._end_effector))
 
@@ -435,5 +473,12 @@ class Robot:
         Returns
         -------
         ndarray, shape (4, 4) or (T, 4, 4)
+
+        Examples
+        --------
+        >>> from robotconf import Module
+        >>> robot = Robot([Module("Rz", a=(0, 0, 2))], end_effector=(1, 0, 0))
+        >>> robot.end_effector_pose([0.0])[:3, 3]
+        array([1., 0., 2.])
         """
         return self._compute(chain_point_pose, q, out, np.array(self._end_effector))
