@@ -1,0 +1,30 @@
+"""The README's Python examples run and print what their comments claim."""
+
+import pathlib
+import re
+
+import numpy as np
+
+README = pathlib.Path(__file__).resolve().parents[1] / "README.md"
+
+
+def python_blocks() -> list[str]:
+    return re.findall(r"```python\n(.*?)```", README.read_text(encoding="utf-8"), flags=re.S)
+
+
+def test_readme_quickstart_runs_and_matches_the_paper():
+    blocks = python_blocks()
+    assert blocks, "README.md has no python example"
+    namespace: dict = {}
+    # The README is our own file in this repository, not user input.
+    exec(compile(blocks[0], str(README), "exec"), namespace)  # noqa: S102
+    robot = namespace["robot"]
+    np.testing.assert_array_equal(
+        robot.frame_origins([0, 0, 0]), [[0, 0, 0], [0, 0, 20], [30, 0, 20]]
+    )
+    np.testing.assert_array_equal(robot.end_effector([0, 0, 0]), [70, 0, 20])
+
+
+def test_readme_shows_the_two_commands():
+    text = README.read_text(encoding="utf-8")
+    assert "make lab" in text and "make test" in text
