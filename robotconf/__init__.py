@@ -1,7 +1,7 @@
 """robotconf: serial-robot kinematics for teaching, from modules or Denavit–Hartenberg rows.
 
-The core (this package's top level) needs only numpy; notebooks, plots and the 3D view
-import their libraries when they are used.
+The core (this package's top level) needs only numpy; tables, plots, symbolic algebra and
+the 3D view import their libraries when they are used.
 
 >>> import robotconf as rc
 >>> robot = rc.Robot(
@@ -12,12 +12,16 @@ import their libraries when they are used.
 array([70.,  0., 20.])
 """
 
+from . import signals
 from ._dh import DH_CONVENTIONS, DHLink, dh_matrix
 from ._errors import InvalidInputError
 from ._geometry import LinkGeometry
+from ._jacobian import jacobian
 from ._link import JOINT_TYPES, Link
 from ._module import MODULE_KINDS, Module, kind_name, transfer_matrix
+from ._motion_table import compare_motions
 from ._robot import Robot
+from ._simulation import Motion, simulate
 from ._validation import check_finite_number, check_joint_values, check_vector3
 
 __version__ = "0.1.0"
@@ -31,11 +35,16 @@ __all__ = [
     "LinkGeometry",
     "MODULE_KINDS",
     "Module",
+    "Motion",
     "Robot",
     "check_finite_number",
     "check_joint_values",
     "check_vector3",
+    "compare_motions",
     "dh_matrix",
+    "jacobian",
     "kind_name",
+    "signals",
+    "simulate",
     "transfer_matrix",
 ]

@@ -10,6 +10,7 @@ import numpy as np
 from ._dh import DHLink, check_convention
 from ._errors import InvalidInputError
 from ._geometry import LinkGeometry
+from ._jacobian import jacobian
 from ._kinematics import chain_origins, chain_point, chain_point_pose, chain_poses, link_matrices
 from ._link import Link
 from ._validation import check_joint_values, check_vector3
@@ -482,3 +483,31 @@ class Robot:
         array([1., 0., 2.])
         """
         return self._compute(chain_point_pose, q, out, np.array(self._end_effector))
+
+    def jacobian(self, q: Any = None, frame: Any = None) -> np.ndarray:
+        """Geometric Jacobian of a module frame's origin or of the end-effector.
+
+        Parameters
+        ----------
+        q : array-like, shape (n,) or (T, n), optional
+            Coordinates; default: the modules' own ``q``.
+        frame : int, str or None
+            ``None`` or ``"EE"``: the end-effector; ``0 … n−1`` or a module name (``"M2"``).
+
+        Returns
+        -------
+        ndarray, shape (6, n) or (T, 6, n)
+            Linear rows first (length/s per unit q̇), then angular (rad/s), base frame.
+
+        See Also
+        --------
+        robotconf.jacobian : the same as a function.
+
+        Examples
+        --------
+        >>> from robotconf import Module
+        >>> arm = Robot([Module("Rz")], end_effector=(2, 0, 0))
+        >>> arm.jacobian([0.0])[:, 0]
+        array([0., 2., 0., 0., 0., 1.])
+        """
+        return jacobian(self, q, frame)

@@ -1,0 +1,35 @@
+"""Signals that drive a generalized coordinate over time: ``q(t)``, ``q̇(t)``, ``q̈(t)``.
+
+Simulink's source blocks (Constant, Step, Ramp, Sine Wave, Repeating Sequence) and the
+smooth point-to-point profiles of a robotics course (cubic, quintic, trapezoidal velocity).
+Every signal is immutable, vectorized over a time array (seconds) and gives exact
+derivatives; at kinks and step edges the right-sided derivative is reported and the
+impulse is left out (see :meth:`Signal.kinks`). Signals combine with numbers and each
+other: ``saw * 0.5 + 1``, ``-sig``, ``a + b``.
+
+>>> from robotconf import signals
+>>> saw = signals.RepeatingSequence(times=[0, 2], values=[0, 2]) * 0.5 + 1
+>>> saw.value([0.0, 1.0, 2.0])
+array([1. , 1.5, 1. ])
+>>> saw.kinks(0.0, 5.0)
+array([0., 2., 4.])
+"""
+
+from ._base import Affine, Signal, Sum
+from ._profiles import Cubic, Quintic, Trapezoidal
+from ._repeating import RepeatingSequence
+from ._sources import Constant, Ramp, Sine, Step
+
+__all__ = [
+    "Affine",
+    "Constant",
+    "Cubic",
+    "Quintic",
+    "Ramp",
+    "RepeatingSequence",
+    "Signal",
+    "Sine",
+    "Step",
+    "Sum",
+    "Trapezoidal",
+]

@@ -1,0 +1,279 @@
+"""The signal protocol, time validation and offset/scale/sum arithmetic.
+
+A signal maps time ``t`` (seconds) to a generalized coordinate ``q(t)`` together with its
+exact derivatives. Every signal is immutable and vectorized over a time array.
+
+Where a derivative is undefined (a kink of a ramp or of a repeating sequence, the edge of a
+step), every signal reports the **right-sided** value: the derivative of the piece that
+starts at that instant. Impulses (the Dirac spikes a jump or a kink would put into the
+velocity or acceleration) are not representable by numbers and are left out; the instants
+where they occur are listed by :meth:`Signal.kinks`.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from .._errors import InvalidInputError
+from .._validation import check_finite_number
+
+__all__ = ["Signal", "Affine", "Sum", "as_times"]
+
+
+def as_times(t: Any, field: str = "t") -> tuple[np.ndarray, bool]:
+    """Validate times (seconds): a finite number or array → float array and "was scalar".
+
+    Examples
+    --------
+    >>> as_times([0, 0.5])
+    (array([0. , 0.5]), False)
+    >>> as_times(float("nan"))
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: t: must be finite, got nan; allowed: finite times in seconds
+    """
+    allowed = "finite times in seconds"
+    if isinstance(t, (str, bytes, bool, np.bool_)):
+        raise InvalidInputError(field, t, allowed, problem="not a time:")
+    try:
+        array = np.asarray(t, dtype=float)
+    except (TypeError, ValueError):
+        raise InvalidInputError(field, t, allowed, problem="not numeric:") from None
+    finite = np.isfinite(array)
+    if not finite.all():
+        bad = float(array.ravel()[np.flatnonzero(~finite.ravel())[0]])
+        raise InvalidInputError(field, bad, allowed, problem="must be finite, got")
+    return array, array.ndim == 0
+
+
+def _number(value: Any, field: str) -> float | None:
+    """A finite float for numbers, ``None`` for other types (so operators can decline)."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
+        return None
+    return check_finite_number(value, field)
+
+
+def _out(array: np.ndarray, scalar: bool) -> Any:
+    return float(array) if scalar else array
+
+
+class Signal:
+    """Base class of all signals: ``q(t)``, ``q̇(t)``, ``q̈(t)`` over a time array.
+
+    Subclasses implement ``_value``, ``_velocity`` and ``_acceleration`` on a validated
+    float array and, if they have any, ``_kinks``. Signals combine with numbers and with
+    each other: ``sig * 0.5 + 1``, ``-sig``, ``sig / 2``, ``1 - sig``, ``sig + other``.
+
+    Examples
+    --------
+    >>> from robotconf.signals import Ramp
+    >>> ramp = Ramp(slope=2.0) * 0.5 + 1
+    >>> ramp
+    Ramp(slope=2.0) * 0.5 + 1.0
+    >>> ramp.value([0.0, 1.0]), ramp.velocity(3.0)
+    (array([1., 2.]), 1.0)
+    """
+
+    __slots__ = ()
+
+    # -- evaluation ---------------------------------------------------------------------
+
+    def value(self, t: Any) -> Any:
+        """The coordinate ``q(t)``.
+
+        Parameters
+        ----------
+        t : float or array-like, shape (T,)
+            Times (s).
+
+        Returns
+        -------
+        float or ndarray, shape (T,)
+            Radians for a rotation, length units for a translation.
+        """
+        times, scalar = as_times(t)
+        return _out(self._value(times), scalar)
+
+    def velocity(self, t: Any) -> Any:
+        """The exact first derivative ``q̇(t)`` (per second), right-sided at kinks."""
+        times, scalar = as_times(t)
+        return _out(self._velocity(times), scalar)
+
+    def acceleration(self, t: Any) -> Any:
+        """The exact second derivative ``q̈(t)`` (per s²), right-sided; impulses left out."""
+        times, scalar = as_times(t)
+        return _out(self._acceleration(times), scalar)
+
+    def __call__(self, t: Any) -> Any:
+        """Same as :meth:`value`."""
+        return self.value(t)
+
+    def kinks(self, t_start: float, t_stop: float) -> np.ndarray:
+        """Instants in ``[t_start, t_stop]`` where ``q`` or ``q̇`` jumps.
+
+        There the exact acceleration holds an impulse, which finite differences show as a
+        spike and :meth:`acceleration` leaves out.
+
+        Returns
+        -------
+        ndarray, shape (K,)
+            Sorted times (s); empty for smooth signals.
+        """
+        t0 = check_finite_number(t_start, "t_start")
+        t1 = check_finite_number(t_stop, "t_stop")
+        return np.unique(self._kinks(t0, t1))
+
+    def _kinks(self, t0: float, t1: float) -> np.ndarray:
+        return np.empty(0)
+
+    def _value(self, t: np.ndarray) -> np.ndarray:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def _velocity(self, t: np.ndarray) -> np.ndarray:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    def _acceleration(self, t: np.ndarray) -> np.ndarray:  # pragma: no cover - abstract
+        raise NotImplementedError
+
+    # -- arithmetic ---------------------------------------------------------------------
+
+    def __mul__(self, other: Any) -> Signal:
+        factor = _number(other, "scale")
+        if factor is None:
+            return NotImplemented
+        if isinstance(self, Affine):
+            return Affine(self.base, self.scale * factor, self.offset * factor)
+        return Affine(self, factor, 0.0)
+
+    __rmul__ = __mul__
+
+    def __truediv__(self, other: Any) -> Signal:
+        divisor = _number(other, "divisor")
+        if divisor is None:
+            return NotImplemented
+        if divisor == 0.0:
+            raise InvalidInputError("divisor", divisor, "a non-zero number", problem="zero:")
+        return self * (1.0 / divisor)
+
+    def __neg__(self) -> Signal:
+        return self * -1.0
+
+    def __pos__(self) -> Signal:
+        return self
+
+    def __add__(self, other: Any) -> Signal:
+        if isinstance(other, Signal):
+            left = self.terms if isinstance(self, Sum) else (self,)
+            right = other.terms if isinstance(other, Sum) else (other,)
+            return Sum(left + right)
+        shift = _number(other, "offset")
+        if shift is None:
+            return NotImplemented
+        if isinstance(self, Affine):
+            return Affine(self.base, self.scale, self.offset + shift)
+        return Affine(self, 1.0, shift)
+
+    __radd__ = __add__
+
+    def __sub__(self, other: Any) -> Signal:
+        if isinstance(other, Signal):
+            return self + (-other)
+        shift = _number(other, "offset")
+        return NotImplemented if shift is None else self + (-shift)
+
+    def __rsub__(self, other: Any) -> Signal:
+        return (-self) + other
+
+
+@dataclass(frozen=True, repr=False)
+class Affine(Signal):
+    """``scale · base(t) + offset``: what ``sig * k + c`` builds.
+
+    Examples
+    --------
+    >>> from robotconf.signals import Constant
+    >>> (2 * Constant(3.0) - 1).value(0.0)
+    5.0
+    """
+
+    base: Signal
+    scale: float = 1.0
+    offset: float = 0.0
+
+    def __post_init__(self) -> None:
+        if not isinstance(self.base, Signal):
+            raise InvalidInputError("base", self.base, "a signal")
+        object.__setattr__(self, "scale", check_finite_number(self.scale, "scale"))
+        object.__setattr__(self, "offset", check_finite_number(self.offset, "offset"))
+
+    def __repr__(self) -> str:
+        text = f"({self.base!r})" if isinstance(self.base, Sum) else repr(self.base)
+        if self.scale == -1.0:
+            text = f"-{text}"
+        elif self.scale != 1.0:
+            text = f"{text} * {self.scale!r}"
+        if self.offset > 0.0:
+            text += f" + {self.offset!r}"
+        elif self.offset < 0.0:
+            text += f" - {-self.offset!r}"
+        return text
+
+    def _value(self, t: np.ndarray) -> np.ndarray:
+        out = self.base._value(t)
+        if self.scale != 1.0:
+            out = out * self.scale
+        return out + self.offset if self.offset != 0.0 else out
+
+    def _velocity(self, t: np.ndarray) -> np.ndarray:
+        return self.base._velocity(t) * self.scale
+
+    def _acceleration(self, t: np.ndarray) -> np.ndarray:
+        return self.base._acceleration(t) * self.scale
+
+    def _kinks(self, t0: float, t1: float) -> np.ndarray:
+        return self.base._kinks(t0, t1) if self.scale != 0.0 else np.empty(0)
+
+
+@dataclass(frozen=True, repr=False)
+class Sum(Signal):
+    """The sum of several signals: what ``a + b`` builds.
+
+    Examples
+    --------
+    >>> from robotconf.signals import Constant, Ramp
+    >>> total = Ramp() + Constant(1.0)
+    >>> total
+    Ramp() + Constant(1.0)
+    >>> total.value(2.0), total.velocity(2.0)
+    (3.0, 1.0)
+    """
+
+    terms: tuple[Signal, ...]
+
+    def __post_init__(self) -> None:
+        terms = tuple(self.terms)
+        if not terms or not all(isinstance(s, Signal) for s in terms):
+            raise InvalidInputError("terms", self.terms, "one or more signals")
+        object.__setattr__(self, "terms", terms)
+
+    def __repr__(self) -> str:
+        text = repr(self.terms[0])
+        for term in self.terms[1:]:
+            part = repr(term)
+            text += f" - {part[1:]}" if part.startswith("-") else f" + {part}"
+        return text
+
+    def _value(self, t: np.ndarray) -> np.ndarray:
+        return np.sum([s._value(t) for s in self.terms], axis=0)
+
+    def _velocity(self, t: np.ndarray) -> np.ndarray:
+        return np.sum([s._velocity(t) for s in self.terms], axis=0)
+
+    def _acceleration(self, t: np.ndarray) -> np.ndarray:
+        return np.sum([s._acceleration(t) for s in self.terms], axis=0)
+
+    def _kinks(self, t0: float, t1: float) -> np.ndarray:
+        return np.concatenate([s._kinks(t0, t1) for s in self.terms])

@@ -1,0 +1,190 @@
+"""Smooth point-to-point profiles: cubic, quintic and trapezoidal velocity.
+
+Each moves a coordinate from ``start`` to ``end`` in ``duration`` seconds beginning at
+``start_time``; it holds ``start`` before and ``end`` after. Velocity is continuous in all
+three, so none has kinks. The acceleration of the cubic (at both ends) and of the
+trapezoid (at its four corners) jumps; there the **right-sided** value is reported.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+from .._errors import InvalidInputError
+from .._validation import check_finite_number
+from ._base import Signal
+
+__all__ = ["Cubic", "Quintic", "Trapezoidal"]
+
+
+@dataclass(frozen=True, repr=False)
+class _PointToPoint(Signal):
+    start: float = 0.0
+    end: float = 1.0
+    duration: float = 1.0
+    start_time: float = 0.0
+
+    def __post_init__(self) -> None:
+        for name in ("start", "end", "duration", "start_time"):
+            object.__setattr__(self, name, check_finite_number(getattr(self, name), name))
+        if self.duration <= 0.0:
+            raise InvalidInputError(
+                "duration", self.duration, "a duration > 0 (s)", problem="must be positive, got"
+            )
+
+    def _extra_repr(self) -> str:
+        return ""
+
+    def __repr__(self) -> str:
+        text = f"{type(self).__name__}(start={self.start!r}, end={self.end!r}, "
+        text += f"duration={self.duration!r}"
+        if self.start_time != 0.0:
+            text += f", start_time={self.start_time!r}"
+        return text + self._extra_repr() + ")"
+
+    @property
+    def end_time(self) -> float:
+        """When the motion ends (s)."""
+        return self.start_time + self.duration
+
+    def _tau(self, t: np.ndarray) -> np.ndarray:
+        """Normalized time in [0, 1], clipped."""
+        return np.clip((t - self.start_time) / self.duration, 0.0, 1.0)
+
+    def _inside(self, t: np.ndarray) -> np.ndarray:
+        """``start_time ≤ t < end_time``: where right-sided accelerations are non-zero."""
+        return (t >= self.start_time) & (t < self.end_time)
+
+
+@dataclass(frozen=True, repr=False)
+class Cubic(_PointToPoint):
+    """Cubic polynomial with zero velocity at both ends: ``s(τ) = 3τ² − 2τ³``.
+
+    Parameters
+    ----------
+    start, end : float
+        Initial and final value.
+    duration : float
+        Motion time (s), > 0.
+    start_time : float
+        When the motion begins (s).
+
+    Examples
+    --------
+    >>> move = Cubic(start=0.0, end=1.0, duration=2.0)
+    >>> move.value([0.0, 1.0, 2.0, 3.0]), move.velocity(1.0), move.acceleration(0.0)
+    (array([0. , 0.5, 1. , 1. ]), 0.75, 1.5)
+    """
+
+    def _value(self, t: np.ndarray) -> np.ndarray:
+        s = self._tau(t)
+        return self.start + (self.end - self.start) * (s * s * (3.0 - 2.0 * s))
+
+    def _velocity(self, t: np.ndarray) -> np.ndarray:
+        s = self._tau(t)
+        return ((self.end - self.start) / self.duration) * (6.0 * s * (1.0 - s))
+
+    def _acceleration(self, t: np.ndarray) -> np.ndarray:
+        s = self._tau(t)
+        scale = (self.end - self.start) / self.duration**2
+        return np.where(self._inside(t), scale * (6.0 - 12.0 * s), 0.0)
+
+
+@dataclass(frozen=True, repr=False)
+class Quintic(_PointToPoint):
+    """Quintic polynomial, zero velocity and acceleration at both ends.
+
+    ``s(τ) = 10τ³ − 15τ⁴ + 6τ⁵``; acceleration is continuous everywhere.
+
+    Examples
+    --------
+    >>> move = Quintic(start=1.0, end=3.0, duration=1.0, start_time=1.0)
+    >>> move.value([0.0, 1.5, 5.0]), move.velocity(1.5)
+    (array([1., 2., 3.]), 3.75)
+    """
+
+    def _value(self, t: np.ndarray) -> np.ndarray:
+        s = self._tau(t)
+        return self.start + (self.end - self.start) * (s**3 * (10.0 + s * (-15.0 + 6.0 * s)))
+
+    def _velocity(self, t: np.ndarray) -> np.ndarray:
+        s = self._tau(t)
+        return ((self.end - self.start) / self.duration) * (30.0 * (s * (1.0 - s)) ** 2)
+
+    def _acceleration(self, t: np.ndarray) -> np.ndarray:
+        s = self._tau(t)
+        scale = (self.end - self.start) / self.duration**2
+        return scale * (60.0 * s * (1.0 - s) * (1.0 - 2.0 * s))
+
+
+@dataclass(frozen=True, repr=False)
+class Trapezoidal(_PointToPoint):
+    """Trapezoidal velocity: constant acceleration, cruise, constant deceleration.
+
+    The acceleration and the deceleration phase each last ``accel_fraction · duration``;
+    ``accel_fraction = 0.5`` gives a triangular velocity profile. The cruise velocity is
+    ``(end − start) / (duration · (1 − accel_fraction))``.
+
+    Parameters
+    ----------
+    start, end, duration, start_time : float
+        As for :class:`Cubic`.
+    accel_fraction : float
+        Share of ``duration`` spent accelerating, ``0 < accel_fraction ≤ 0.5``.
+
+    Examples
+    --------
+    >>> move = Trapezoidal(start=0.0, end=3.0, duration=4.0, accel_fraction=0.25)
+    >>> move.velocity([0.5, 2.0, 3.5]), move.acceleration([0.5, 2.0, 3.5])
+    (array([0.5, 1. , 0.5]), array([ 1.,  0., -1.]))
+    >>> move.value(4.0)
+    3.0
+    """
+
+    accel_fraction: float = 0.25
+
+    def __post_init__(self) -> None:
+        super().__post_init__()
+        fraction = check_finite_number(self.accel_fraction, "accel_fraction")
+        if not 0.0 < fraction <= 0.5:
+            raise InvalidInputError(
+                "accel_fraction",
+                fraction,
+                "a number with 0 < accel_fraction ≤ 0.5",
+                problem="out of range:",
+            )
+        object.__setattr__(self, "accel_fraction", fraction)
+
+    def _extra_repr(self) -> str:
+        return "" if self.accel_fraction == 0.25 else f", accel_fraction={self.accel_fraction!r}"
+
+    def _parts(self, t: np.ndarray) -> tuple[np.ndarray, float, float, float]:
+        """Elapsed time clipped to [0, D], blend time, cruise velocity, acceleration."""
+        blend = self.accel_fraction * self.duration
+        cruise = (self.end - self.start) / (self.duration - blend)
+        elapsed = np.clip(t - self.start_time, 0.0, self.duration)
+        return elapsed, blend, cruise, cruise / blend
+
+    def _value(self, t: np.ndarray) -> np.ndarray:
+        s, tb, v, a = self._parts(t)
+        rising = self.start + 0.5 * a * s * s
+        cruising = self.start + v * (s - 0.5 * tb)
+        left = self.duration - s
+        falling = self.end - 0.5 * a * left * left
+        return np.where(s < tb, rising, np.where(s < self.duration - tb, cruising, falling))
+
+    def _velocity(self, t: np.ndarray) -> np.ndarray:
+        s, tb, v, a = self._parts(t)
+        return (
+            np.minimum(np.minimum(a * s, v), a * (self.duration - s))
+            if v >= 0
+            else (np.maximum(np.maximum(a * s, v), a * (self.duration - s)))
+        )
+
+    def _acceleration(self, t: np.ndarray) -> np.ndarray:
+        s, tb, v, a = self._parts(t)
+        inside = self._inside(t)
+        out = np.where(s < tb, a, np.where(s < self.duration - tb, 0.0, -a))
+        return np.where(inside, out, 0.0)

@@ -1,0 +1,158 @@
+"""Simulink's Repeating Sequence: a time/value table, interpolated and repeated."""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import Any
+
+import numpy as np
+
+from .._errors import InvalidInputError
+from ._base import Signal
+
+__all__ = ["RepeatingSequence"]
+
+_TIMES = "a list of ≥ 2 finite times (s) starting at 0 and strictly increasing"
+_VALUES = "a list of finite values, one per time"
+
+
+def _table(raw: Any, field_name: str, allowed: str) -> np.ndarray:
+    if isinstance(raw, (str, bytes)):
+        raise InvalidInputError(field_name, raw, allowed, problem="text is not a table:")
+    try:
+        array = np.asarray(raw, dtype=float)
+    except (TypeError, ValueError):
+        raise InvalidInputError(field_name, raw, allowed, problem="not numeric:") from None
+    if array.ndim != 1:
+        raise InvalidInputError(
+            field_name, raw, allowed, problem=f"expected a flat list, got shape {array.shape}:"
+        )
+    if array.size == 0:
+        raise InvalidInputError(field_name, raw, allowed, problem="empty table:")
+    finite = np.isfinite(array)
+    if not finite.all():
+        bad = int(np.flatnonzero(~finite)[0])
+        raise InvalidInputError(
+            field_name, raw, allowed, problem=f"entry {bad} is {array[bad]}, not finite:"
+        )
+    return array
+
+
+@dataclass(frozen=True, repr=False)
+class RepeatingSequence(Signal):
+    """A table of (time, value) points, linearly interpolated and repeated forever.
+
+    Simulink semantics: the period is the last time value, and the output at ``t`` is the
+    table interpolated at ``t mod period``. The default table, times ``[0, 2]`` and values
+    ``[0, 2]``, is Simulink's default: a sawtooth rising from 0 to 2 in 2 s and jumping
+    back to 0 (the paper's Figure 16).
+
+    Derivatives are exact inside each segment (the segment's slope; acceleration 0). At a
+    table time (a kink) the velocity is the **right-sided** slope of the segment starting
+    there, and the value is right-continuous (at ``t = period`` the sawtooth is back at 0).
+    A jump (``values[-1] != values[0]``) or a change of slope puts an impulse into the
+    exact velocity or acceleration; it is left out here and listed by :meth:`kinks`.
+
+    Parameters
+    ----------
+    times : array-like, shape (m,)
+        Strictly increasing times (s), ``m ≥ 2``, starting at 0. The last one is the period.
+    values : array-like, shape (m,)
+        Output at each time.
+
+    Raises
+    ------
+    InvalidInputError
+        For an empty table, unequal lengths, fewer than two points, NaN or infinity, a
+        first time other than 0, or times that do not strictly increase.
+
+    Examples
+    --------
+    >>> saw = RepeatingSequence()
+    >>> saw
+    RepeatingSequence(times=(0.0, 2.0), values=(0.0, 2.0))
+    >>> saw.value([0.5, 1.999, 2.0, 3.0]), saw.velocity(1.0)
+    (array([0.5  , 1.999, 0.   , 1.   ]), 1.0)
+    >>> RepeatingSequence(times=[0, 2, 1], values=[0, 1, 0])
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: times: times must strictly increase, but times[2] = 1.0 ...
+    """
+
+    times: tuple[float, ...] = (0.0, 2.0)
+    values: tuple[float, ...] = (0.0, 2.0)
+    _t: np.ndarray = field(init=False, repr=False, compare=False)
+    _v: np.ndarray = field(init=False, repr=False, compare=False)
+    _slope: np.ndarray = field(init=False, repr=False, compare=False)
+
+    def __post_init__(self) -> None:
+        t = _table(self.times, "times", _TIMES)
+        v = _table(self.values, "values", _VALUES)
+        if t.size != v.size:
+            raise InvalidInputError(
+                "values",
+                self.values,
+                f"{t.size} values, one per time",
+                problem=f"unequal lengths: {t.size} times but {v.size} values:",
+            )
+        if t.size < 2:
+            raise InvalidInputError(
+                "times",
+                self.times,
+                _TIMES,
+                problem="need at least two points (the last time is the period), got",
+            )
+        if t[0] != 0.0:
+            raise InvalidInputError("times", self.times, _TIMES, problem="first time must be 0:")
+        step = np.diff(t)
+        if not (step > 0.0).all():
+            k = int(np.flatnonzero(step <= 0.0)[0]) + 1
+            raise InvalidInputError(
+                "times",
+                self.times,
+                _TIMES + " (for a jump, use a tiny time gap)",
+                problem=f"times must strictly increase, but times[{k}] = {t[k]} follows "
+                f"{t[k - 1]}:",
+            )
+        for name, array in (("_t", t), ("_v", v), ("_slope", np.diff(v) / step)):
+            array.flags.writeable = False
+            object.__setattr__(self, name, array)
+        object.__setattr__(self, "times", tuple(t.tolist()))
+        object.__setattr__(self, "values", tuple(v.tolist()))
+
+    def __repr__(self) -> str:
+        return f"RepeatingSequence(times={self.times!r}, values={self.values!r})"
+
+    @property
+    def period(self) -> float:
+        """The period (s): the last time value."""
+        return self.times[-1]
+
+    def _segment(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """Phase ``t mod period`` and the index of the segment holding it (right-sided)."""
+        phase = np.mod(t, self.period)
+        index = np.searchsorted(self._t, phase, side="right") - 1
+        return phase, np.clip(index, 0, self._t.size - 2)
+
+    def _value(self, t: np.ndarray) -> np.ndarray:
+        phase, k = self._segment(t)
+        return self._v[k] + self._slope[k] * (phase - self._t[k])
+
+    def _velocity(self, t: np.ndarray) -> np.ndarray:
+        return self._slope[self._segment(t)[1]]
+
+    def _acceleration(self, t: np.ndarray) -> np.ndarray:
+        return np.zeros(t.shape)
+
+    def _kinks(self, t0: float, t1: float) -> np.ndarray:
+        slope, values = self._slope, self._v
+        phases = [self._t[k] for k in range(1, slope.size) if slope[k] != slope[k - 1]]
+        if values[-1] != values[0] or slope[-1] != slope[0]:
+            phases.append(0.0)  # the wrap-around at every multiple of the period
+        if not phases or t1 < t0:
+            return np.empty(0)
+        period = self.period
+        first, last = np.floor(t0 / period), np.ceil(t1 / period)
+        cycles = np.arange(first, last + 1.0) * period
+        times = (cycles[:, np.newaxis] + np.array(phases)[np.newaxis, :]).ravel()
+        return times[(times >= t0) & (times <= t1)]

@@ -1,0 +1,84 @@
+"""Motion.plot: layout, labels, data and the kink annotation."""
+
+from __future__ import annotations
+
+import matplotlib
+
+matplotlib.use("Agg")
+
+import numpy as np  # noqa: E402
+import pytest  # noqa: E402
+
+import robotconf as rc  # noqa: E402
+from robotconf._motion_plot import kink_note, plot_motion  # noqa: E402
+from robotconf._simulation import simulate  # noqa: E402
+from robotconf.signals import Quintic, RepeatingSequence  # noqa: E402
+
+
+def paper_robot() -> rc.Robot:
+    return rc.Robot(
+        [rc.Module("Rz"), rc.Module("Ry", a=(0, 0, 20)), rc.Module("Ry", a=(30, 0, 0))],
+        end_effector=(40, 0, 0),
+        name="RzRyRy",
+    )
+
+
+def _text(fig) -> str:  # type: ignore[no-untyped-def]
+    """Free text of the figure (the annotation), without the title."""
+    return " ".join(t.get_text() for t in fig.texts if t is not fig._suptitle)
+
+
+def test_layout_labels_and_data() -> None:
+    motion = simulate(paper_robot(), {"q3": RepeatingSequence()}, t_end=4.0, dt=1e-2)
+    fig = motion.plot("EE", length_unit="mm")
+    axes = np.array(fig.axes).reshape(3, 3)
+    assert [ax.get_title() for ax in axes[0]] == ["EE: x", "EE: y", "EE: z"]
+    assert [ax.get_ylabel() for ax in axes[:, 0]] == [
+        "position [mm]",
+        "velocity [mm/s]",
+        "acceleration [mm/s²]",
+    ]
+    assert all(ax.get_xlabel() == "time (s)" for ax in axes[2])
+    assert axes[0, 0].get_shared_x_axes().joined(axes[0, 0], axes[2, 2])
+    for r, quantity in enumerate(("position", "velocity", "acceleration")):
+        for c in range(3):
+            x, y = axes[r, c].lines[0].get_data()
+            np.testing.assert_array_equal(x, motion.t)
+            np.testing.assert_array_equal(y, motion.quantity(quantity)[:, 3, c])
+    assert "RzRyRy: EE (analytic derivatives)" in fig._suptitle.get_text()
+    assert "one-sided" in _text(fig)
+    # Kink instants t = 0, 2, 4 marked on the acceleration row.
+    assert len(axes[2, 0].lines) == 1 + 3
+
+
+def test_numeric_plot_explains_the_spikes() -> None:
+    motion = simulate(
+        paper_robot(), {"q3": RepeatingSequence()}, t_end=5.0, dt=1e-2, method="numeric"
+    )
+    note = kink_note(motion)
+    assert note is not None and "q3 at t = 0, 2, 4 s" in note and "impulse" in note
+    assert "Δv/dt" in note
+    fig = plot_motion(motion, "M3", displacement=True)
+    assert note in _text(fig)
+    assert fig.axes[0].get_ylabel() == "displacement [length]"
+    np.testing.assert_array_equal(fig.axes[0].lines[0].get_data()[1], motion.displacement[:, 2, 0])
+
+
+def test_smooth_input_has_no_annotation() -> None:
+    motion = simulate(paper_robot(), {"q2": Quintic()}, t_end=1.0, dt=1e-2, method="numeric")
+    assert kink_note(motion) is None
+    assert _text(motion.plot()) == ""
+
+
+def test_figure_is_not_registered_with_pyplot() -> None:
+    import matplotlib.pyplot as plt
+
+    before = plt.get_fignums()
+    simulate(paper_robot(), {}, t_end=1.0, dt=0.1).plot()
+    assert plt.get_fignums() == before
+
+
+def test_unknown_point() -> None:
+    motion = simulate(paper_robot(), {}, t_end=1.0, dt=0.1)
+    with pytest.raises(ValueError, match=r"point: unknown point 'M4'; allowed: one of \('M1'"):
+        motion.plot("M4")
