@@ -13,8 +13,12 @@ array([70.,  0., 20.])
 """
 
 from . import signals
+from ._check_result import MatrixCheck
+from ._checking import assert_matrix, check_matrix
+from ._derivation import Derivation, DerivationStep, derivation
 from ._dh import DH_CONVENTIONS, DHLink, dh_matrix
 from ._errors import InvalidInputError
+from ._expected import ExpectedMatrix, expected_matrix
 from ._geometry import LinkGeometry
 from ._jacobian import jacobian
 from ._link import JOINT_TYPES, Link
@@ -22,29 +26,44 @@ from ._module import MODULE_KINDS, Module, kind_name, transfer_matrix
 from ._motion_table import compare_motions
 from ._robot import Robot
 from ._simulation import Motion, simulate
+from ._student_parser import ParserLimits, parse_expression, parse_matrix
+from ._symbolic import SymbolicChain, symbolic_chain
 from ._validation import check_finite_number, check_joint_values, check_vector3
 
 __version__ = "0.1.0"
 
 __all__ = [
     "DH_CONVENTIONS",
-    "DHLink",
-    "InvalidInputError",
     "JOINT_TYPES",
-    "Link",
-    "LinkGeometry",
     "MODULE_KINDS",
-    "Module",
-    "Motion",
-    "Robot",
+    "assert_matrix",
     "check_finite_number",
     "check_joint_values",
+    "check_matrix",
     "check_vector3",
     "compare_motions",
+    "derivation",
+    "Derivation",
+    "DerivationStep",
     "dh_matrix",
+    "DHLink",
+    "expected_matrix",
+    "ExpectedMatrix",
+    "InvalidInputError",
     "jacobian",
     "kind_name",
+    "Link",
+    "LinkGeometry",
+    "MatrixCheck",
+    "Module",
+    "Motion",
+    "parse_expression",
+    "parse_matrix",
+    "ParserLimits",
+    "Robot",
     "signals",
     "simulate",
+    "symbolic_chain",
+    "SymbolicChain",
     "transfer_matrix",
 ]
