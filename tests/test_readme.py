@@ -25,6 +25,20 @@ def test_readme_quickstart_runs_and_matches_the_paper():
     np.testing.assert_array_equal(robot.end_effector([0, 0, 0]), [70, 0, 20])
 
 
+def test_readme_motion_and_checker_examples_run(tmp_path, monkeypatch):
+    import matplotlib
+
+    matplotlib.use("Agg")
+    monkeypatch.chdir(tmp_path)
+    namespace: dict = {}
+    for block in python_blocks()[:2]:
+        exec(compile(block, str(README), "exec"), namespace)  # noqa: S102
+    motion = namespace["motion"]
+    z = motion.table[("EE", "position", "z")].to_numpy()
+    q3 = motion.q[:, 2]
+    np.testing.assert_allclose(z, 20 - 40 * np.sin(q3), atol=1e-9)
+
+
 def test_readme_shows_the_two_commands():
     text = README.read_text(encoding="utf-8")
     assert "make lab" in text and "make test" in text
