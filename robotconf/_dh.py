@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Mapping, Sequence
 from dataclasses import dataclass, field
 from typing import Any
 
@@ -12,7 +13,7 @@ from ._geometry import LinkGeometry
 from ._link import Link
 from ._validation import check_finite_number
 
-__all__ = ["DHLink", "dh_matrix", "DH_CONVENTIONS", "check_convention"]
+__all__ = ["DHLink", "dh_matrix", "dh_link_from_row", "DH_CONVENTIONS", "check_convention"]
 
 #: ``standard``: ``A = Rz(θ)·Tz(d)·Tx(a)·Rx(α)`` (paper eq. 9–10);
 #: ``modified`` (Craig): ``A = Rx(α)·Tx(a)·Rz(θ)·Tz(d)``.
@@ -200,3 +201,44 @@ def dh_matrix(theta: Any, d: Any, a: Any, alpha: Any, convention: str = "standar
     if np.ndim(theta) == 0:
         return link.matrix(check_finite_number(theta, "theta"))
     return link.matrix(theta)
+
+
+_DH_FIELDS = ("theta", "d", "a", "alpha", "joint")
+
+
+def dh_link_from_row(row: Any, convention: str, index: int) -> DHLink:
+    """One row of a DH table as a :class:`DHLink`, with errors naming ``rows[index]``.
+
+    Parameters
+    ----------
+    row : (theta, d, a, alpha, joint), dict with those keys (plus ``q``, ``name``), or DHLink
+    convention : {"standard", "modified"}
+        Applied to tuple and dict rows; a DHLink keeps its own.
+    index : int
+        Position of the row, for error messages.
+
+    Examples
+    --------
+    >>> dh_link_from_row((0, 0.1, 0.5, 0, "P"), "standard", 0).joint_type
+    'prismatic'
+    """
+    if isinstance(row, DHLink):
+        return row
+    field = f"rows[{index}]"
+    allowed = "(theta, d, a, alpha, joint) with joint 'R' or 'P', or a dict with those keys"
+    if isinstance(row, Mapping):
+        unknown = set(row) - {*_DH_FIELDS, "q", "name"}
+        if unknown:
+            raise InvalidInputError(field, row, allowed, problem=f"unknown keys {sorted(unknown)}:")
+        missing = [key for key in _DH_FIELDS if key not in row]
+        if missing:
+            raise InvalidInputError(field, row, allowed, problem=f"missing {missing}:")
+        values = dict(row)
+    elif isinstance(row, (str, bytes)) or not isinstance(row, Sequence) or len(row) != 5:
+        raise InvalidInputError(field, row, allowed, problem="expected 5 entries, got")
+    else:
+        values = dict(zip(_DH_FIELDS, row, strict=True))
+    try:
+        return DHLink(convention=convention, **values)
+    except InvalidInputError as error:
+        raise error.within(field) from None

@@ -7,7 +7,7 @@ from typing import Any
 
 import numpy as np
 
-from ._dh import DHLink, check_convention
+from ._dh import check_convention, dh_link_from_row
 from ._errors import InvalidInputError
 from ._geometry import LinkGeometry
 from ._jacobian import jacobian
@@ -16,8 +16,6 @@ from ._link import Link
 from ._validation import check_joint_values, check_vector3
 
 __all__ = ["Robot"]
-
-_DH_FIELDS = ("theta", "d", "a", "alpha", "joint")
 
 
 def _check_links(modules: Any) -> tuple[Link, ...]:
@@ -43,29 +41,6 @@ def _check_index(index: Any, size: int, field: str = "index") -> int:
     if not 0 <= int(index) < size:
         raise InvalidInputError(field, int(index), allowed, problem="out of range:")
     return int(index)
-
-
-def _dh_link(row: Any, convention: str, index: int) -> Link:
-    if isinstance(row, DHLink):
-        return row
-    field = f"rows[{index}]"
-    allowed = "(theta, d, a, alpha, joint) with joint 'R' or 'P', or a dict with those keys"
-    if isinstance(row, Mapping):
-        unknown = set(row) - {*_DH_FIELDS, "q", "name"}
-        if unknown:
-            raise InvalidInputError(field, row, allowed, problem=f"unknown keys {sorted(unknown)}:")
-        missing = [key for key in _DH_FIELDS if key not in row]
-        if missing:
-            raise InvalidInputError(field, row, allowed, problem=f"missing {missing}:")
-        values = dict(row)
-    elif isinstance(row, (str, bytes)) or not isinstance(row, Sequence) or len(row) != 5:
-        raise InvalidInputError(field, row, allowed, problem="expected 5 entries, got")
-    else:
-        values = dict(zip(_DH_FIELDS, row, strict=True))
-    try:
-        return DHLink(convention=convention, **values)
-    except InvalidInputError as error:
-        raise error.within(field) from None
 
 
 class Robot:
@@ -180,7 +155,7 @@ class Robot:
             raise InvalidInputError(
                 "rows", rows, "a list of DH rows (theta, d, a, alpha, joint)", problem="not a list:"
             )
-        links = [_dh_link(row, convention, i) for i, row in enumerate(rows)]
+        links = [dh_link_from_row(row, convention, i) for i, row in enumerate(rows)]
         if not links:
             raise InvalidInputError("rows", [], "at least one DH row", problem="empty:")
         return cls(links, end_effector=end_effector, name=name)

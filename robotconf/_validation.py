@@ -9,14 +9,19 @@ import numpy as np
 
 from ._errors import InvalidInputError
 
-__all__ = ["check_finite_number", "check_vector3", "check_joint_values"]
+__all__ = ["as_float_array", "check_finite_number", "check_vector3", "check_joint_values"]
 
 _FINITE = "a finite real number"
 
 
-def _as_float_array(value: Any, field: str, allowed: str) -> np.ndarray:
+def as_float_array(value: Any, field: str, allowed: str, what: str = "a number") -> np.ndarray:
+    """``np.asarray(value, dtype=float)``, refusing text and non-numeric objects clearly.
+
+    >>> as_float_array([1, 2], "times", "numbers")
+    array([1., 2.])
+    """
     if isinstance(value, (str, bytes)):
-        raise InvalidInputError(field, value, allowed, problem="text is not a number:")
+        raise InvalidInputError(field, value, allowed, problem=f"text is not {what}:")
     try:
         array = np.asarray(value, dtype=float)
     except (TypeError, ValueError):
@@ -54,7 +59,7 @@ def check_finite_number(value: Any, field: str) -> float:
     """
     if isinstance(value, (bool, np.bool_)):
         raise InvalidInputError(field, value, _FINITE, problem="a boolean is not a number:")
-    array = _as_float_array(value, field, _FINITE)
+    array = as_float_array(value, field, _FINITE)
     if array.shape != ():
         raise InvalidInputError(
             field, value, _FINITE, problem=f"expected one number, got shape {array.shape}:"
@@ -96,7 +101,7 @@ def check_vector3(value: Any, field: str) -> tuple[float, float, float]:
     allowed = "3 finite numbers (x, y, z)"
     if isinstance(value, (str, bytes)):
         raise InvalidInputError(field, value, allowed, problem="text is not a vector:")
-    array = _as_float_array(value, field, allowed)
+    array = as_float_array(value, field, allowed)
     if array.shape != (3,):
         raise InvalidInputError(
             field, value, allowed, problem=f"expected shape (3,), got {array.shape}:"
@@ -150,7 +155,7 @@ def check_joint_values(
     robotconf.InvalidInputError: q: expected shape (3,) or (T, 3), got (2,): [0, 0]; allowed: ...
     """
     allowed = "one number per module (radians for rotations, length for translations)"
-    array = _as_float_array(q, field, allowed)
+    array = as_float_array(q, field, allowed)
     if array.ndim not in (1, 2) or array.shape[-1] != n:
         raise InvalidInputError(
             field, q, allowed, problem=f"expected shape ({n},) or (T, {n}), got {array.shape}:"

@@ -8,6 +8,7 @@ from typing import Any
 import numpy as np
 
 from .._errors import InvalidInputError
+from .._validation import as_float_array
 from ._base import Signal
 
 __all__ = ["RepeatingSequence"]
@@ -17,12 +18,7 @@ _VALUES = "a list of finite values, one per time"
 
 
 def _table(raw: Any, field_name: str, allowed: str) -> np.ndarray:
-    if isinstance(raw, (str, bytes)):
-        raise InvalidInputError(field_name, raw, allowed, problem="text is not a table:")
-    try:
-        array = np.asarray(raw, dtype=float)
-    except (TypeError, ValueError):
-        raise InvalidInputError(field_name, raw, allowed, problem="not numeric:") from None
+    array = as_float_array(raw, field_name, allowed, what="a table")
     if array.ndim != 1:
         raise InvalidInputError(
             field_name, raw, allowed, problem=f"expected a flat list, got shape {array.shape}:"
