@@ -13,12 +13,9 @@ q1, q2, q3, l1, l2, l3 = sympy.symbols("q1 q2 q3 l1 l2 l3", real=True)
 
 
 @pytest.fixture
-def paper_robot() -> Robot:
-    return Robot(
-        [Module("Rz"), Module("Ry", a=(0, 0, 20)), Module("Ry", a=(30, 0, 0))],
-        end_effector=(40, 0, 0),
-        name="RzRyRy",
-    )
+def paper_robot(paper_robot: Robot) -> Robot:
+    """The shared paper robot (conftest), named so reprs can be checked."""
+    return paper_robot.with_name("RzRyRy")
 
 
 @pytest.fixture

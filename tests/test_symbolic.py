@@ -23,14 +23,6 @@ q1, q2, q3, l1, l2, l3 = sympy.symbols("q1 q2 q3 l1 l2 l3", real=True)
 
 
 @pytest.fixture
-def paper_robot() -> Robot:
-    return Robot(
-        [Module("Rz"), Module("Ry", a=(0, 0, 20)), Module("Ry", a=(30, 0, 0))],
-        end_effector=(40, 0, 0),
-    )
-
-
-@pytest.fixture
 def rng() -> np.random.Generator:
     return np.random.default_rng(7)
 
