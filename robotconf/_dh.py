@@ -10,6 +10,7 @@ import numpy as np
 
 from ._errors import InvalidInputError
 from ._geometry import LinkGeometry
+from ._limits import check_limits
 from ._link import Link
 from ._validation import check_finite_number
 
@@ -67,6 +68,9 @@ class DHLink(Link):
     q : float
         The joint coordinate's own value.
     name : str, optional
+    limits : (lo, hi), optional
+        Range of ``q`` (radians for "R", length for "P"), ``lo < hi``; ``None``: the
+        robot's default (see :meth:`Robot.joint_limits`). Not enforced on ``q``.
 
     Examples
     --------
@@ -86,6 +90,7 @@ class DHLink(Link):
     convention: str = "standard"
     q: float = 0.0
     name: str | None = field(default=None)
+    limits: tuple[float, float] | None = None
 
     def __post_init__(self) -> None:
         for attribute in ("theta", "d", "a", "alpha", "q"):
@@ -100,6 +105,7 @@ class DHLink(Link):
         object.__setattr__(self, "convention", check_convention(self.convention))
         if self.name is not None and not isinstance(self.name, str):
             raise InvalidInputError("name", self.name, "text or None")
+        object.__setattr__(self, "limits", check_limits(self.limits))
 
     def __repr__(self) -> str:
         text = (
@@ -110,6 +116,8 @@ class DHLink(Link):
             text += f", q={self.q!r}"
         if self.name is not None:
             text += f", name={self.name!r}"
+        if self.limits is not None:
+            text += f", limits={self.limits!r}"
         return text + ")"
 
     @property
@@ -154,17 +162,29 @@ class DHLink(Link):
             offset=self.d,
         )
 
+    def _copy(self, **changes: Any) -> DHLink:
+        values = {name: getattr(self, name) for name in _ALL_FIELDS}
+        values.update(changes)
+        return DHLink(**values)
+
     def with_q(self, q: float) -> DHLink:
         """A copy with another coordinate value."""
-        return DHLink(
-            self.theta, self.d, self.a, self.alpha, self.joint, self.convention, q, self.name
-        )
+        return self._copy(q=q)
 
     def with_name(self, name: str | None) -> DHLink:
         """A copy with another display name."""
-        return DHLink(
-            self.theta, self.d, self.a, self.alpha, self.joint, self.convention, self.q, name
-        )
+        return self._copy(name=name)
+
+    def with_limits(self, limits: Any) -> DHLink:
+        """A copy with another range ``(lo, hi)`` of ``q`` (``None``: the default).
+
+        >>> DHLink(a=1.0).with_limits((-2, 2)).limits
+        (-2.0, 2.0)
+        """
+        return self._copy(limits=limits)
+
+
+_ALL_FIELDS = ("theta", "d", "a", "alpha", "joint", "convention", "q", "name", "limits")
 
 
 def dh_matrix(theta: Any, d: Any, a: Any, alpha: Any, convention: str = "standard") -> np.ndarray:
@@ -211,7 +231,8 @@ def dh_link_from_row(row: Any, convention: str, index: int) -> DHLink:
 
     Parameters
     ----------
-    row : (theta, d, a, alpha, joint), dict with those keys (plus ``q``, ``name``), or DHLink
+    row : (theta, d, a, alpha, joint), dict with those keys (plus ``q``, ``name``, ``limits``),
+        or DHLink
     convention : {"standard", "modified"}
         Applied to tuple and dict rows; a DHLink keeps its own.
     index : int
@@ -227,7 +248,7 @@ def dh_link_from_row(row: Any, convention: str, index: int) -> DHLink:
     field = f"rows[{index}]"
     allowed = "(theta, d, a, alpha, joint) with joint 'R' or 'P', or a dict with those keys"
     if isinstance(row, Mapping):
-        unknown = set(row) - {*_DH_FIELDS, "q", "name"}
+        unknown = set(row) - {*_DH_FIELDS, "q", "name", "limits"}
         if unknown:
             raise InvalidInputError(field, row, allowed, problem=f"unknown keys {sorted(unknown)}:")
         missing = [key for key in _DH_FIELDS if key not in row]

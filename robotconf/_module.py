@@ -9,6 +9,7 @@ import numpy as np
 
 from ._errors import InvalidInputError
 from ._geometry import LinkGeometry
+from ._limits import check_link_limits
 from ._link import Link
 from ._validation import check_finite_number, check_vector3
 
@@ -88,11 +89,16 @@ class Module(Link):
         by ``none`` and ``fixed``.
     name : str, optional
         Display name; the robot calls unnamed modules ``M1, M2, …``.
+    limits : (lo, hi), optional
+        Range of ``q`` (radians for rotations, length for translations), ``lo < hi``;
+        only for joints. ``None``: the robot's default (see :meth:`Robot.joint_limits`).
+        Not enforced on ``q``.
 
     Raises
     ------
     InvalidInputError
-        On an unknown kind, a malformed or non-finite ``a`` or ``q``, or a non-text name.
+        On an unknown kind, a malformed or non-finite ``a`` or ``q``, a non-text name, or
+        a malformed range or a range on a ``none``/``fixed`` module.
 
     Examples
     --------
@@ -106,12 +112,15 @@ class Module(Link):
            [ 0.,  1.,  0.,  0.],
            [-1.,  0.,  0., 20.],
            [ 0.,  0.,  0.,  1.]])
+    >>> Module("Tz", limits=(0, 50))
+    Module('Tz', limits=(0.0, 50.0))
     """
 
     kind: str
     a: tuple[float, float, float] = (0.0, 0.0, 0.0)
     q: float = 0.0
     name: str | None = field(default=None)
+    limits: tuple[float, float] | None = None
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "kind", kind_name(self.kind))
@@ -119,6 +128,7 @@ class Module(Link):
         object.__setattr__(self, "q", check_finite_number(self.q, "q"))
         if self.name is not None and not isinstance(self.name, str):
             raise InvalidInputError("name", self.name, "text or None")
+        object.__setattr__(self, "limits", check_link_limits(self.limits, self.joint_type))
 
     def __repr__(self) -> str:
         parts = [repr(self.kind)]
@@ -128,6 +138,8 @@ class Module(Link):
             parts.append(f"q={self.q!r}")
         if self.name is not None:
             parts.append(f"name={self.name!r}")
+        if self.limits is not None:
+            parts.append(f"limits={self.limits!r}")
         return f"Module({', '.join(parts)})"
 
     @property
@@ -163,19 +175,36 @@ class Module(Link):
 
     def with_q(self, q: float) -> Module:
         """A copy with another coordinate value."""
-        return Module(self.kind, self.a, q, self.name)
+        return Module(self.kind, self.a, q, self.name, self.limits)
 
     def with_a(self, a: Any) -> Module:
         """A copy with other offsets."""
-        return Module(self.kind, a, self.q, self.name)
+        return Module(self.kind, a, self.q, self.name, self.limits)
 
     def with_kind(self, kind: Any) -> Module:
-        """A copy with another movement type (offsets, q and name kept)."""
-        return Module(kind, self.a, self.q, self.name)
+        """A copy with another movement type (offsets, q and name kept).
+
+        The range is kept when the joint type (revolute or prismatic) stays the same, and
+        dropped otherwise: radians do not become lengths, and none/fixed have no joint.
+
+        >>> joint = Module("Rz", limits=(-1, 1))
+        >>> joint.with_kind("Ry").limits, joint.with_kind("Tz").limits
+        ((-1.0, 1.0), None)
+        """
+        new = Module(kind, self.a, self.q, self.name)
+        return new.with_limits(self.limits) if new.joint_type == self.joint_type else new
 
     def with_name(self, name: str | None) -> Module:
         """A copy with another display name."""
-        return Module(self.kind, self.a, self.q, name)
+        return Module(self.kind, self.a, self.q, name, self.limits)
+
+    def with_limits(self, limits: Any) -> Module:
+        """A copy with another range ``(lo, hi)`` of ``q`` (``None``: the default).
+
+        >>> Module("Ry").with_limits((-1.5, 1.5)).limits
+        (-1.5, 1.5)
+        """
+        return Module(self.kind, self.a, self.q, self.name, limits)
 
 
 def transfer_matrix(kind: Any, q: Any = 0.0, a: Any = (0.0, 0.0, 0.0)) -> np.ndarray:

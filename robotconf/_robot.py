@@ -13,6 +13,7 @@ from ._geometry import LinkGeometry
 from ._jacobian import jacobian
 from ._kinematics import chain_origins, chain_point, chain_point_pose, chain_poses, link_matrices
 from ._link import Link
+from ._robot_methods import RobotMethods
 from ._validation import check_joint_values, check_vector3
 
 __all__ = ["Robot"]
@@ -43,11 +44,11 @@ def _check_index(index: Any, size: int, field: str = "index") -> int:
     return int(index)
 
 
-class Robot:
+class Robot(RobotMethods):
     """A serial robot: links (modules or DH rows) and an end-effector point.
 
     Immutable: every ``with_…`` method returns a new robot, so an editor can always keep
-    the last valid one.
+    the last valid one (ranges and files: see :class:`~robotconf._robot_methods.RobotMethods`).
 
     Parameters
     ----------
@@ -109,9 +110,8 @@ class Robot:
         self._end_effector = point
         self._active = active
         self._name = name
-        count = self.active
         self._geometry: tuple[LinkGeometry | None, ...] = tuple(
-            link.geometry() if i < count else None for i, link in enumerate(links)
+            link.geometry() if i < self.active else None for i, link in enumerate(links)
         )
 
     # -- construction -------------------------------------------------------------------
@@ -130,7 +130,7 @@ class Robot:
         ----------
         rows : iterable of (theta, d, a, alpha, joint), dicts with those keys, or DHLink
             Angles in radians, lengths in length units; ``joint`` is ``"R"`` (q adds to θ)
-            or ``"P"`` (q adds to d). Dict rows may also give ``q`` and ``name``.
+            or ``"P"`` (q adds to d). Dict rows may also give ``q``, ``name``, ``limits``.
         convention : {"standard", "modified"}
             ``standard``: ``Rz(θ)·Tz(d)·Tx(a)·Rx(α)``; ``modified`` (Craig):
             ``Rx(α)·Tx(a)·Rz(θ)·Tz(d)``. Applies to every tuple or dict row.
@@ -486,3 +486,14 @@ class Robot:
         array([0., 2., 0., 0., 0., 1.])
         """
         return jacobian(self, q, frame)
+
+    def to_urdf(self, name: str | None = None, **options: Any) -> str:
+        """The robot as URDF text (kinematics only); see :func:`robotconf.to_urdf`.
+
+        >>> from robotconf import Module
+        >>> "<joint name=\\"q1\\" type=\\"revolute\\">" in Robot([Module("Rz")]).to_urdf()
+        True
+        """
+        from ._urdf import to_urdf
+
+        return to_urdf(self, name, **options)

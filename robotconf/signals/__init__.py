@@ -18,6 +18,7 @@ array([0., 2., 4.])
 from ._base import Affine, Signal, Sum
 from ._profiles import Cubic, Quintic, Trapezoidal
 from ._repeating import RepeatingSequence
+from ._serialize import SIGNAL_TYPES, signal_from_dict
 from ._sources import Constant, Ramp, Sine, Step
 
 __all__ = [
@@ -28,6 +29,8 @@ __all__ = [
     "Ramp",
     "RepeatingSequence",
     "Signal",
+    "SIGNAL_TYPES",
+    "signal_from_dict",
     "Sine",
     "Step",
     "Sum",

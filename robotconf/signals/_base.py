@@ -12,7 +12,7 @@ where they occur are listed by :meth:`Signal.kinks`.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from typing import Any
 
 import numpy as np
@@ -54,6 +54,15 @@ def _number(value: Any, field: str) -> float | None:
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, float, np.number)):
         return None
     return check_finite_number(value, field)
+
+
+def _plain(value: Any) -> Any:
+    """A parameter as JSON-ready data: signals → dicts, tuples → lists."""
+    if isinstance(value, Signal):
+        return value.to_dict()
+    if isinstance(value, tuple):
+        return [_plain(v) for v in value]
+    return value
 
 
 def _out(array: np.ndarray, scalar: bool) -> Any:
@@ -128,6 +137,27 @@ class Signal:
 
     def _kinks(self, t0: float, t1: float) -> np.ndarray:
         return np.empty(0)
+
+    def to_dict(self) -> dict[str, Any]:
+        """A lossless dict of plain values: ``{"type": class name, parameter: value, …}``.
+
+        Every parameter is written (also defaults); tables become lists and the parts of
+        :class:`Affine` and :class:`Sum` nested dicts, so ``json.dumps`` can write it and
+        :func:`~robotconf.signals.signal_from_dict` rebuilds an equal signal.
+
+        Examples
+        --------
+        >>> from robotconf.signals import Ramp, Sine
+        >>> Sine(amplitude=2.0).to_dict()
+        {'type': 'Sine', 'amplitude': 2.0, 'bias': 0.0, 'frequency': 1.0, 'phase': 0.0}
+        >>> (Ramp() * 2).to_dict()["base"]
+        {'type': 'Ramp', 'slope': 1.0, 'start_time': 0.0, 'initial_output': 0.0}
+        """
+        out: dict[str, Any] = {"type": type(self).__name__}
+        for item in fields(self):  # type: ignore[arg-type]
+            if item.init:
+                out[item.name] = _plain(getattr(self, item.name))
+        return out
 
     def _value(self, t: np.ndarray) -> np.ndarray:  # pragma: no cover - abstract
         raise NotImplementedError

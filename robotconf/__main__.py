@@ -1,0 +1,8 @@
+"""``python -m robotconf …``: the same as the ``robotconf`` console script."""
+
+import sys
+
+from ._cli import main
+
+if __name__ == "__main__":
+    sys.exit(main())
