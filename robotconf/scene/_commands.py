@@ -1,0 +1,246 @@
+"""The scene's messages: meshcat commands, batched transforms and label texts.
+
+A scene speaks meshcat's own command language (``set_object``, ``set_property``,
+``delete``, ``set_animation``; three.js JSON built by :mod:`meshcat.geometry`) plus two
+batched operations that keep a slider fast: all transforms of one update in one binary
+buffer, and all label texts in one list. An :class:`Op` is a JSON-able dict plus its
+binary buffers; a :class:`SceneLog` keeps the latest op per key, so a new view, a page
+reload or an HTML export replays a compact scene instead of its whole history.
+"""
+
+from __future__ import annotations
+
+import uuid
+from collections.abc import Iterable, Sequence
+from typing import Any, NamedTuple
+
+import numpy as np
+
+__all__ = [
+    "Op",
+    "SceneLog",
+    "RecordingChannel",
+    "command_op",
+    "set_object_op",
+    "transforms_op",
+    "labels_op",
+    "pack_ops",
+    "shape_object",
+    "ROOT",
+]
+
+#: Every robotconf object lives under this meshcat path.
+ROOT = "/meshcat/robotconf"
+
+
+class Op(NamedTuple):
+    """One operation for the viewer: a JSON-able dict and its binary buffers."""
+
+    content: dict[str, Any]
+    buffers: tuple[bytes, ...] = ()
+
+
+def command_op(command: dict[str, Any]) -> Op:
+    """Wrap a lowered meshcat command (``{"type": "set_object", ...}``)."""
+    return Op({"op": "command", "command": command})
+
+
+def set_object_op(path: str, obj: dict[str, Any]) -> Op:
+    """meshcat's ``set_object``: as JSON, or msgpack-packed when it holds typed arrays.
+
+    Typed arrays (a triad's vertices, a point cloud) are msgpack extension types, which
+    only the packed form carries; plain shapes stay readable JSON.
+    """
+    command = {"type": "set_object", "path": path, "object": obj}
+    if _has_ext(obj):
+        import umsgpack
+
+        return Op({"op": "packed", "type": "set_object", "path": path}, (umsgpack.packb(command),))
+    return command_op(command)
+
+
+def _has_ext(value: Any) -> bool:
+    if isinstance(value, dict):
+        return any(_has_ext(v) for v in value.values())
+    if isinstance(value, (list, tuple)):
+        return any(_has_ext(v) for v in value)
+    return type(value).__name__ == "Ext"
+
+
+def transforms_op(paths: Sequence[str], matrices: np.ndarray) -> Op:
+    """All transforms of one update: paths and one float32 buffer, column-major 4×4 each.
+
+    Examples
+    --------
+    >>> op = transforms_op(["/meshcat/a"], np.eye(4)[None])
+    >>> op.content["paths"], len(op.buffers[0])
+    (['/meshcat/a'], 64)
+    """
+    # three.js Matrix4.fromArray reads column-major; float32 is what WebGL uses anyway.
+    data = np.ascontiguousarray(np.swapaxes(matrices, -1, -2), dtype=np.float32).tobytes()
+    return Op({"op": "transforms", "paths": list(paths)}, (data,))
+
+
+def labels_op(paths: Sequence[str], texts: Sequence[str]) -> Op:
+    """New texts for existing label sprites (redrawn in place, no new objects)."""
+    return Op({"op": "labels", "paths": list(paths), "texts": list(texts)})
+
+
+def pack_ops(ops: Iterable[Op]) -> tuple[list[dict[str, Any]], list[bytes]]:
+    """Flatten ops into one message: each op's ``buffers`` become indices into one list.
+
+    Examples
+    --------
+    >>> contents, buffers = pack_ops([transforms_op(["/a"], np.eye(4)[None])])
+    >>> contents[0]["buffers"], len(buffers)
+    ([0], 1)
+    """
+    contents: list[dict[str, Any]] = []
+    buffers: list[bytes] = []
+    for op in ops:
+        content = dict(op.content)
+        content["buffers"] = list(range(len(buffers), len(buffers) + len(op.buffers)))
+        buffers.extend(op.buffers)
+        contents.append(content)
+    return contents, buffers
+
+
+class SceneLog:
+    """The latest op under each key, in the order a replay must apply them.
+
+    Re-recording a key moves it to the end, so a replay creates objects before it moves
+    them. ``forget(prefix)`` drops everything under a deleted path.
+    """
+
+    def __init__(self) -> None:
+        self._entries: dict[tuple[str, str], Op] = {}
+
+    def record(self, key: tuple[str, str], op: Op) -> None:
+        self._entries.pop(key, None)
+        self._entries[key] = op
+
+    def forget(self, prefix: str) -> None:
+        for key in [k for k in self._entries if k[1] == prefix or k[1].startswith(prefix + "/")]:
+            del self._entries[key]
+
+    def ops(self) -> list[Op]:
+        return list(self._entries.values())
+
+    def __len__(self) -> int:
+        return len(self._entries)
+
+
+class RecordingChannel:
+    """A viewer stand-in for tests: remembers every op it was sent.
+
+    Examples
+    --------
+    >>> channel = RecordingChannel()
+    >>> channel.send([labels_op(["/a"], ["EE (70.0, 0.0, 20.0)"])])
+    >>> channel.kinds()
+    ['labels']
+    """
+
+    def __init__(self) -> None:
+        self.messages: list[list[Op]] = []
+
+    def send(self, ops: list[Op]) -> None:
+        self.messages.append(list(ops))
+
+    def close(self) -> None:
+        """Nothing to release."""
+
+    @property
+    def ops(self) -> list[Op]:
+        return [op for message in self.messages for op in message]
+
+    def kinds(self) -> list[str]:
+        """``"labels"``, ``"transforms"``, ``"visible"`` or the meshcat command of every op."""
+        return [_kind(op) for op in self.ops]
+
+    def commands(self, kind: str) -> list[dict[str, Any]]:
+        """Every meshcat command of one type (``"set_object"``, ``"delete"``, …)."""
+        return [_command(op) for op in self.ops if _kind(op) == kind]
+
+    def clear(self) -> None:
+        self.messages.clear()
+
+
+def _kind(op: Op) -> str:
+    content = op.content
+    if content["op"] == "command":
+        return str(content["command"]["type"])
+    return str(content.get("type", content["op"]))
+
+
+def _command(op: Op) -> dict[str, Any]:
+    if op.content["op"] == "packed":
+        import umsgpack
+
+        return dict(umsgpack.unpackb(op.buffers[0]))
+    return dict(op.content.get("command", op.content))
+
+
+def shape_object(shape: str, size: float, color: int) -> dict[str, Any]:
+    """The three.js JSON of one unit shape, built with :mod:`meshcat.geometry`.
+
+    Parameters
+    ----------
+    shape : {"sphere", "cylinder", "box", "triad", "label"}
+    size : float
+        Radius, half-width, triad length or label height (length units).
+    color : int
+        0xRRGGBB (ignored by triads and labels).
+    """
+    import meshcat.geometry as g
+
+    material = g.MeshLambertMaterial(color=color)
+    if shape == "sphere":
+        return g.Mesh(g.Sphere(size), material).lower()
+    if shape == "cylinder":
+        return g.Mesh(g.Cylinder(1.0, size), material).lower()
+    if shape == "box":
+        return g.Mesh(g.Box([2 * size, 1.0, 2 * size]), material).lower()
+    if shape == "triad":
+        return g.triad(size).lower()
+    if shape == "label":
+        return _label_object(size)
+    raise ValueError(f"shape: unknown shape {shape!r}")  # pragma: no cover - internal
+
+
+def _label_object(height: float) -> dict[str, Any]:
+    # meshcat's viewer draws "_text" textures on a canvas; robotconf's glue reshapes it to
+    # 512×64 and redraws it when the text changes, so the sprite is created once.
+    texture, material, sprite = (str(uuid.uuid4()) for _ in range(3))
+    tall = height / 0.7  # the text fills about 70 % of the band
+    wide = 8.0 * tall
+    return {
+        "metadata": {"version": 4.5, "type": "Object"},
+        "geometries": [],
+        "textures": [
+            {
+                "uuid": texture,
+                "type": "_text",
+                "text": " ",
+                "font_size": 28,
+                "font_face": "sans-serif",
+            }
+        ],
+        "images": [],
+        "materials": [
+            {
+                "uuid": material,
+                "type": "SpriteMaterial",
+                "map": texture,
+                "transparent": True,
+                "depthTest": False,
+            }
+        ],
+        "object": {
+            "uuid": sprite,
+            "type": "Sprite",
+            "material": material,
+            "matrix": [wide, 0, 0, 0, 0, tall, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1],
+            "renderOrder": 10,
+        },
+    }

@@ -1,0 +1,161 @@
+"""Placing unit shapes in the 3D scene: position, orientation and scale of each drawn item.
+
+Every shape is drawn once at unit size along three.js's y axis (its cylinders' axis) and
+then moved by a transform ``T(position) · R · S(scale)``. These helpers turn points and
+directions that the core computed into such transforms; they hold no kinematics, only the
+drawing convention.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["Placement", "align_y", "compose", "quaternions", "segment_placement"]
+
+#: Below this length (relative to the robot's size) a segment is drawn as nothing.
+ZERO_LENGTH = 1e-9
+
+
+class Placement:
+    """Positions (…, 3), rotations (…, 3, 3) and scales (…, 3) of drawn items.
+
+    Parameters
+    ----------
+    position : ndarray, shape (..., 3)
+    rotation : ndarray, shape (..., 3, 3)
+    scale : ndarray, shape (..., 3)
+    """
+
+    __slots__ = ("position", "rotation", "scale")
+
+    def __init__(self, position: np.ndarray, rotation: np.ndarray, scale: np.ndarray) -> None:
+        self.position = position
+        self.rotation = rotation
+        self.scale = scale
+
+    def matrices(self) -> np.ndarray:
+        """Homogeneous 4×4 transforms, shape (..., 4, 4)."""
+        return compose(self.position, self.rotation, self.scale)
+
+
+def align_y(direction: np.ndarray) -> np.ndarray:
+    """Rotations that turn the y axis onto unit ``direction`` (…, 3) → (…, 3, 3).
+
+    The shortest-arc rotation (Rodrigues' formula about ``y × d``); ``d = −y`` turns
+    about x. NaN or zero directions give the identity.
+
+    Examples
+    --------
+    >>> align_y(np.array([1.0, 0.0, 0.0])).round(12) @ [0, 1, 0]
+    array([1., 0., 0.])
+    """
+    d = np.nan_to_num(np.asarray(direction, dtype=float))
+    norm = np.linalg.norm(d, axis=-1, keepdims=True)
+    d = np.where(norm > 0, d / np.where(norm > 0, norm, 1.0), [0.0, 1.0, 0.0])
+    x, y, z = d[..., 0], d[..., 1], d[..., 2]
+    # y × d = (z, 0, −x); cos θ = y; Rodrigues with k = (z, 0, −x)/sin θ folded in.
+    c = y
+    factor = np.where(c > -1.0 + 1e-12, 1.0 / np.where(c > -1.0 + 1e-12, 1.0 + c, 1.0), 0.0)
+    out = np.empty(d.shape[:-1] + (3, 3))
+    out[..., 0, 0] = c + z * z * factor
+    out[..., 0, 1] = x
+    out[..., 0, 2] = -x * z * factor
+    out[..., 1, 0] = -x
+    out[..., 1, 1] = c
+    out[..., 1, 2] = -z
+    out[..., 2, 0] = -x * z * factor
+    out[..., 2, 1] = z
+    out[..., 2, 2] = c + x * x * factor
+    flipped = c <= -1.0 + 1e-12
+    if np.any(flipped):
+        out[flipped] = np.diag([1.0, -1.0, -1.0])
+    return out
+
+
+def segment_placement(start: np.ndarray, end: np.ndarray, tiny: float) -> Placement:
+    """Place a unit cylinder or box (length 1 along y) from ``start`` to ``end``.
+
+    Parameters
+    ----------
+    start, end : ndarray, shape (..., 3)
+    tiny : float
+        Length under which the segment is drawn as nothing (scaled to ``tiny`` along all
+        axes, so no NaN and nothing visible).
+
+    Examples
+    --------
+    >>> p = segment_placement(np.zeros(3), np.array([0.0, 0.0, 2.0]), 1e-9)
+    >>> p.position, p.scale
+    (array([0., 0., 1.]), array([1., 2., 1.]))
+    """
+    vector = end - start
+    length = np.linalg.norm(vector, axis=-1)
+    rotation = align_y(vector)
+    visible = length > tiny
+    scale = np.stack([np.ones_like(length), length, np.ones_like(length)], axis=-1)
+    scale = np.where(visible[..., None], scale, tiny)
+    return Placement((start + end) / 2.0, rotation, scale)
+
+
+def compose(position: np.ndarray, rotation: np.ndarray, scale: np.ndarray) -> np.ndarray:
+    """``T(position) · R · S(scale)`` as 4×4 matrices, shape (..., 4, 4).
+
+    Examples
+    --------
+    >>> compose(np.array([1.0, 2, 3]), np.eye(3), np.array([2.0, 2, 2]))[:3]
+    array([[2., 0., 0., 1.],
+           [0., 2., 0., 2.],
+           [0., 0., 2., 3.]])
+    """
+    out = np.zeros(position.shape[:-1] + (4, 4))
+    out[..., :3, :3] = rotation * scale[..., None, :]
+    out[..., :3, 3] = position
+    out[..., 3, 3] = 1.0
+    return out
+
+
+def quaternions(rotation: np.ndarray) -> np.ndarray:
+    """Unit quaternions ``(x, y, z, w)`` (three.js order) of rotations (…, 3, 3).
+
+    Shepperd's method: pick the largest of ``w, x, y, z`` to divide by, so no branch
+    loses precision.
+
+    Examples
+    --------
+    >>> quaternions(np.eye(3))
+    array([0., 0., 0., 1.])
+    """
+    r = np.asarray(rotation, dtype=float)
+    m00, m11, m22 = r[..., 0, 0], r[..., 1, 1], r[..., 2, 2]
+    candidates = np.stack(
+        [1 + m00 + m11 + m22, 1 + m00 - m11 - m22, 1 - m00 + m11 - m22, 1 - m00 - m11 + m22],
+        axis=-1,
+    )
+    pick = np.argmax(candidates, axis=-1)
+    root = np.sqrt(np.maximum(np.take_along_axis(candidates, pick[..., None], -1)[..., 0], 1e-300))
+    half = 0.5 / root
+    w = np.select(
+        [pick == 0, pick == 1, pick == 2],
+        [0.5 * root, (r[..., 2, 1] - r[..., 1, 2]) * half, (r[..., 0, 2] - r[..., 2, 0]) * half],
+        (r[..., 1, 0] - r[..., 0, 1]) * half,
+    )
+    x = np.select(
+        [pick == 0, pick == 1, pick == 2],
+        [(r[..., 2, 1] - r[..., 1, 2]) * half, 0.5 * root, (r[..., 0, 1] + r[..., 1, 0]) * half],
+        (r[..., 0, 2] + r[..., 2, 0]) * half,
+    )
+    y = np.select(
+        [pick == 0, pick == 1, pick == 2],
+        [(r[..., 0, 2] - r[..., 2, 0]) * half, (r[..., 0, 1] + r[..., 1, 0]) * half, 0.5 * root],
+        (r[..., 1, 2] + r[..., 2, 1]) * half,
+    )
+    z = np.select(
+        [pick == 0, pick == 1, pick == 2],
+        [
+            (r[..., 1, 0] - r[..., 0, 1]) * half,
+            (r[..., 0, 2] + r[..., 2, 0]) * half,
+            (r[..., 1, 2] + r[..., 2, 1]) * half,
+        ],
+        0.5 * root,
+    )
+    return np.stack([x, y, z, w], axis=-1)

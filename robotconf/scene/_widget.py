@@ -1,0 +1,155 @@
+"""The notebook transport of the 3D scene: an anywidget that runs meshcat's viewer.
+
+No meshcat server, port or subprocess: meshcat's viewer JavaScript (bundled in the
+``meshcat`` wheel) reaches the page once per kernel through a hidden model, and each
+scene's ops travel over the widget's comm channel, batched (one message per update, ≤ 60
+per second with an end-of-burst flush: Jupyter drops IOPub messages beyond about 1000/s).
+A new view asks for the scene log and gets a replay, so page reloads and second views
+show the same scene.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import time
+from collections.abc import Callable
+from functools import cache
+from pathlib import Path
+from typing import Any
+
+import anywidget
+import traitlets
+from ipywidgets import widget_serialization
+
+from ._commands import Op, pack_ops
+
+__all__ = ["SceneWidget", "WidgetChannel", "meshcat_source", "script"]
+
+_JS = Path(__file__).parent / "js"
+
+
+@cache
+def meshcat_source() -> str:
+    """meshcat's bundled three.js viewer (``main.min.js``), read once."""
+    import meshcat
+
+    bundle = Path(meshcat.__file__).parent / "viewer" / "dist" / "main.min.js"
+    return bundle.read_text(encoding="utf-8")
+
+
+@cache
+def script(*names: str) -> str:
+    """robotconf's viewer JavaScript files, concatenated."""
+    return "\n".join((_JS / f"{name}.js").read_text(encoding="utf-8") for name in names)
+
+
+class MeshcatCode(anywidget.AnyWidget):
+    """Hidden model carrying meshcat's viewer code to the page, once per kernel."""
+
+    _esm = traitlets.Unicode(script("glue", "loader")).tag(sync=True)
+    source = traitlets.Unicode("").tag(sync=True)
+
+
+_code: list[MeshcatCode] = []
+
+
+def shared_code() -> MeshcatCode:
+    """The kernel's one :class:`MeshcatCode` model (recreated if it was closed)."""
+    if not _code or _code[0].comm is None:
+        _code[:] = [MeshcatCode(source=meshcat_source())]
+    return _code[0]
+
+
+class SceneWidget(anywidget.AnyWidget):
+    """One 3D pane in the notebook. Use it through :class:`robotconf.scene.Scene`."""
+
+    _esm = traitlets.Unicode(script("glue", "widget")).tag(sync=True)
+    height = traitlets.Int(420).tag(sync=True)
+    # Keeping a reference in the state makes the front end create the code model first.
+    code = traitlets.Instance(MeshcatCode).tag(sync=True, **widget_serialization)
+
+
+class WidgetChannel:
+    """Sends ops to a :class:`SceneWidget`, rate-limited, and answers replay requests.
+
+    Parameters
+    ----------
+    widget : SceneWidget
+    replay : callable
+        Returns the ops a new view must apply (the scene log).
+    max_rate : float or None
+        Messages per second at most; ``None`` sends every batch at once.
+    """
+
+    def __init__(
+        self, widget: SceneWidget, replay: Callable[[], list[Op]], max_rate: float | None = 60.0
+    ) -> None:
+        self.widget = widget
+        self._replay = replay
+        self._interval = 0.0 if not max_rate else 1.0 / max_rate
+        self._last = 0.0
+        self._pending: list[Op] = []
+        self._timer: asyncio.TimerHandle | None = None
+        self.sent = 0
+        widget.on_msg(self._on_message)
+
+    def send(self, ops: list[Op]) -> None:
+        """Send now, or hold the ops for the end-of-burst flush if the rate is exceeded."""
+        self._pending = _coalesce(self._pending + list(ops))
+        now = time.perf_counter()
+        if now - self._last >= self._interval:
+            self.flush()
+        elif self._timer is None:
+            self._schedule(self._interval - (now - self._last))
+
+    def flush(self) -> None:
+        """Send whatever is held, as one message."""
+        if self._timer is not None:
+            self._timer.cancel()
+            self._timer = None
+        if not self._pending:
+            return
+        contents, buffers = pack_ops(self._pending)
+        self._pending = []
+        self._last = time.perf_counter()
+        self.sent += 1
+        self.widget.send({"kind": "batch", "ops": contents}, buffers)
+
+    def _schedule(self, delay: float) -> None:
+        try:
+            loop = asyncio.get_running_loop()
+        except RuntimeError:
+            # No event loop (a script): nobody would run the flush later, so send now.
+            self.flush()
+            return
+        self._timer = loop.call_later(max(delay, 0.0), self.flush)
+
+    def _on_message(self, _widget: Any, content: dict[str, Any], _buffers: list[bytes]) -> None:
+        if isinstance(content, dict) and content.get("kind") == "hello":
+            self.flush()
+            contents, buffers = pack_ops(self._replay())
+            self.widget.send(
+                {"kind": "replay", "view": str(content.get("view", "")), "ops": contents},
+                buffers,
+            )
+
+    def close(self) -> None:
+        if self._timer is not None:
+            self._timer.cancel()
+            self._timer = None
+        self.widget.close()
+
+
+def _coalesce(ops: list[Op]) -> list[Op]:
+    # Held transforms and labels are state, not events: only the newest of each counts.
+    latest: dict[tuple[str, str], int] = {}
+    for k, op in enumerate(ops):
+        kind = op.content["op"]
+        if kind in ("transforms", "labels"):
+            latest[(kind, "|".join(op.content["paths"]))] = k
+    keep = set(latest.values())
+    return [
+        op
+        for k, op in enumerate(ops)
+        if op.content["op"] not in ("transforms", "labels") or k in keep
+    ]

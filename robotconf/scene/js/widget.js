@@ -1,0 +1,70 @@
+// anywidget front end of robotconf.scene.Scene (appended to glue.js).
+
+// anywidget imports this module once per model, so page-wide state lives on globalThis:
+// the viewer code arrives once per kernel through a hidden model (see loader.js).
+function rcShared() {
+  const shared = (globalThis.__robotconf_scene ??= {});
+  if (!shared.ready) {
+    shared.ready = new Promise((resolve) => {
+      shared.resolve = resolve;
+    });
+  }
+  return shared;
+}
+
+function rcTimeout(promise, ms) {
+  return Promise.race([
+    promise,
+    new Promise((_, reject) => setTimeout(() => reject(new Error("timeout")), ms)),
+  ]);
+}
+
+async function render({ model, el }) {
+  const height = model.get("height");
+  const wrapper = document.createElement("div");
+  wrapper.className = "robotconf-scene";
+  wrapper.style.cssText = `position: relative; width: 100%; height: ${height}px; overflow: hidden;`;
+  const pane = document.createElement("div");
+  pane.style.cssText = "width: 100%; height: 100%;";
+  const status = document.createElement("div");
+  status.className = "robotconf-scene-status";
+  status.style.cssText = "position: absolute; left: 8px; top: 8px; font: 13px sans-serif;";
+  status.textContent = "Loading the 3D viewer…";
+  wrapper.append(pane, status);
+  el.appendChild(wrapper);
+
+  let handle = null;
+  let closed = false;
+  const view = Math.random().toString(36).slice(2);
+  const pending = [];
+  const onMessage = (msg, buffers) => {
+    if (msg.kind === "replay" && msg.view !== view) return;
+    if (msg.kind !== "batch" && msg.kind !== "replay") return;
+    if (handle) rcApply(handle.viewer, msg.ops, buffers);
+    else pending.push([msg, buffers]);
+  };
+  model.on("msg:custom", onMessage);
+  // Views drop what was sent before they existed: ask the kernel for the scene log.
+  model.send({ kind: "hello", view });
+
+  try {
+    const MeshCat = await rcTimeout(rcShared().ready, 20000);
+    if (closed) return () => {};
+    handle = rcCreateViewer(MeshCat, pane, height);
+    status.remove();
+    el.dataset.robotconfScene = "ready";
+    for (const [msg, buffers] of pending.splice(0)) rcApply(handle.viewer, msg.ops, buffers);
+  } catch (error) {
+    status.textContent =
+      "The 3D viewer did not load (" + error.message + "). Run the cell again; " +
+      "scene.export_html(path) saves a copy that opens in any browser.";
+    el.dataset.robotconfScene = "failed";
+  }
+  return () => {
+    closed = true;
+    model.off("msg:custom", onMessage);
+    if (handle) handle.dispose();
+  };
+}
+
+export default { render };

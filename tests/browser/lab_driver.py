@@ -1,0 +1,65 @@
+"""Small helpers to drive a JupyterLab notebook page with Playwright."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import nbformat
+import numpy as np
+
+
+def write_notebook(path: Path, cells: list[str]) -> None:
+    notebook = nbformat.v4.new_notebook()
+    notebook.metadata["kernelspec"] = {
+        "name": "python3",
+        "display_name": "Python 3 (ipykernel)",
+        "language": "python",
+    }
+    notebook.cells = [nbformat.v4.new_code_cell(source) for source in cells]
+    nbformat.write(notebook, path)
+
+
+def open_notebook(page, url: str) -> None:  # type: ignore[no-untyped-def]
+    page.goto(url)
+    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    # The status bar says Idle once the kernel is connected and ready for code.
+    page.get_by_text("Python 3 (ipykernel) | Idle").wait_for(timeout=90_000)
+    page.wait_for_timeout(500)
+
+
+def run_cell(page, index: int) -> None:  # type: ignore[no-untyped-def]
+    """Select cell ``index`` (0-based) and run it with Shift+Enter."""
+    cell = page.locator(".jp-Notebook .jp-Cell").nth(index)
+    cell.locator(".jp-InputPrompt").click()
+    page.keyboard.press("Shift+Enter")
+    # Done when the prompt shows an execution count, e.g. "[3]:".
+    prompt = cell.locator(".jp-InputArea-prompt")
+    for _ in range(600):
+        if any(ch.isdigit() for ch in prompt.inner_text()):
+            return
+        page.wait_for_timeout(100)
+    raise AssertionError(f"cell {index} did not run: prompt {prompt.inner_text()!r}")
+
+
+def wait_idle(page, timeout: float = 90_000) -> None:  # type: ignore[no-untyped-def]
+    page.wait_for_timeout(300)
+    page.wait_for_selector(".jp-Notebook-ExecutionIndicator[data-status='idle']", timeout=timeout)
+
+
+def pixels(locator) -> np.ndarray:  # type: ignore[no-untyped-def]
+    """RGB pixels of an element's screenshot, shape (H, W, 3)."""
+    from io import BytesIO
+
+    from PIL import Image
+
+    return np.asarray(Image.open(BytesIO(locator.screenshot())).convert("RGB")).astype(int)
+
+
+def red_centroid(image: np.ndarray) -> tuple[int, np.ndarray]:
+    """Number of end-effector-red pixels and their centroid (x, y)."""
+    r, g, b = image[..., 0], image[..., 1], image[..., 2]
+    mask = (r > 140) & (g < 90) & (b < 90)
+    ys, xs = np.nonzero(mask)
+    if len(xs) == 0:
+        return 0, np.array([np.nan, np.nan])
+    return len(xs), np.array([xs.mean(), ys.mean()])
