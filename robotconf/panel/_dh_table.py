@@ -1,0 +1,291 @@
+"""The Denavit–Hartenberg table editor: rows θ, d, a, α, joint type, and the convention."""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Callable, Iterator, Sequence
+from typing import Any
+
+import ipywidgets as widgets
+
+from .._dh import DH_CONVENTIONS, DHLink
+from .._errors import InvalidInputError
+from .._validation import check_finite_number
+from ._errors_display import ErrorLabel
+from ._number_control import NumberControl
+from ._ranges import q_range
+
+__all__ = ["DHTable", "DHRow"]
+
+_CONVENTION_TIPS = (
+    "standard (paper eq. 9): A = Rz(θ)·Tz(d)·Tx(a)·Rx(α)",
+    "modified (Craig): A = Rx(α)·Tx(a)·Rz(θ)·Tz(d); row i holds α(i-1), a(i-1)",
+)
+
+
+def _empty_table_message() -> str:
+    """The core's own message for a DH table without rows."""
+    from .._robot import Robot
+
+    try:
+        Robot.from_dh([])
+    except InvalidInputError as error:
+        return str(error)
+    raise AssertionError("Robot.from_dh([]) must refuse an empty table")  # pragma: no cover
+
+
+class DHRow:
+    """One DH row: θ, d, a, α boxes, joint type R/P, and its coordinate q."""
+
+    FIELDS = ("theta", "d", "a", "alpha")
+
+    def __init__(
+        self,
+        link: DHLink,
+        scale: float,
+        degrees: bool,
+        limits: Any,
+        on_change: Callable[[str], None],
+        on_action: Callable[[DHRow, str], None],
+    ):
+        self._base = link
+        self._scale = scale
+        self._on_change = on_change
+        self.title = widgets.HTML(layout=widgets.Layout(width="30px"))
+        self.error = ErrorLabel()
+        labels = {"theta": "θ", "d": "d", "a": "a", "alpha": "α"}
+        self.cells = {
+            name: NumberControl(
+                labels[name],
+                getattr(link, name),
+                -scale,
+                scale,
+                angle=name in ("theta", "alpha"),
+                degrees=degrees,
+                slider=False,
+                on_change=lambda _: on_change("link"),
+                label_width="14px",
+            )
+            for name in self.FIELDS
+        }
+        self.joint = widgets.Dropdown(
+            options=(("R", "R"), ("P", "P")),
+            value=link.joint,
+            tooltip="R: q adds to θ (revolute); P: q adds to d (prismatic)",
+            layout=widgets.Layout(width="52px"),
+        )
+        self.joint.observe(self._joint_changed, "value")
+        lo, hi = q_range(link.unit, scale, limits, degrees)
+        self.q = NumberControl(
+            "q",
+            link.q,
+            lo,
+            hi,
+            angle=link.joint == "R",
+            degrees=degrees,
+            unit="" if link.joint == "R" else "length",
+            on_change=lambda _: on_change("q"),
+            label_width="16px",
+        )
+        buttons = []
+        for icon, action in (("arrow-up", "up"), ("arrow-down", "down"), ("trash", "remove")):
+            button = widgets.Button(icon=icon, layout=widgets.Layout(width="32px"))
+            button.on_click(lambda _, action=action: on_action(self, action))
+            buttons.append(button)
+        self.up_button, self.down_button, self.remove_button = buttons
+        cells = [c.widget for c in self.cells.values()]
+        self.widget = widgets.VBox(
+            [
+                widgets.HBox(
+                    [self.title, *cells, self.joint, *buttons, self.error.widget],
+                    layout=widgets.Layout(flex_flow="row wrap", align_items="center"),
+                ),
+                self.q.widget,
+            ],
+            layout=widgets.Layout(border="1px solid #ddd", padding="2px 4px", margin="2px 0"),
+        )
+        for cell in self.cells.values():
+            cell.box.layout.width = "70px"
+            cell.unit_label.layout.width = "28px"
+
+    def set_title(self, index: int, count: int) -> None:
+        """Label the row with its link number and enable sensible move buttons."""
+        self.title.value = f"<b>{index + 1}</b>"
+        self.up_button.disabled = index == 0
+        self.down_button.disabled = index == count - 1
+
+    def controls(self) -> Iterator[tuple[str, NumberControl]]:
+        """``(field, control)`` for θ, d, a, α and q."""
+        yield from self.cells.items()
+        yield "q", self.q
+
+    def set_degrees(self, degrees: bool) -> None:
+        """Show θ, α and a revolute q in degrees or radians."""
+        for _, control in self.controls():
+            control.set_degrees(degrees)
+
+    def link(self, convention: str) -> DHLink | None:
+        """The DH link of this row, or ``None`` after showing why it is invalid."""
+        valid = True
+        for field, control in self.controls():
+            try:
+                check_finite_number(control.core_value, field)
+                control.error.clear()
+            except InvalidInputError as error:
+                control.error.show(str(error))
+                valid = False
+        if not valid:
+            return None
+        values: dict[str, Any] = {field: c.core_value for field, c in self.controls()}
+        values.update(joint=self.joint.value, convention=convention)
+        if self.joint.value != self._base.joint:
+            values["limits"] = None  # radians do not become lengths
+        try:
+            link = dataclasses.replace(self._base, **values)
+        except InvalidInputError as error:
+            self.error.show(str(error))
+            return None
+        self.error.clear()
+        return link
+
+    def _joint_changed(self, change: dict[str, Any]) -> None:
+        unit = "rad" if change["new"] == "R" else "length"
+        lo, hi = q_range(unit, self._scale, None, self.q.degrees)
+        self.q.set_angle(unit == "rad", lo, hi, unit="" if unit == "rad" else "length")
+        self._on_change("link")
+
+
+class DHTable:
+    """DH-table mode: rows, add button and the standard/modified selector.
+
+    Examples
+    --------
+    >>> import robotconf as rc
+    >>> table = DHTable(lambda reason, order: None)
+    >>> table.load([rc.DHLink(a=1.0), rc.DHLink(a=1.0)], scale=2.0)
+    >>> table.convention.value = "modified"
+    >>> {link.convention for link in table.links()}
+    {'modified'}
+    """
+
+    def __init__(self, on_change: Callable[[str, list[int | None] | None], None]):
+        self._on_change = on_change
+        self.rows: list[DHRow] = []
+        self._scale = 1.0
+        self.degrees = True
+        self.convention = widgets.ToggleButtons(
+            options=DH_CONVENTIONS,
+            value="standard",
+            description="convention",
+            tooltips=list(_CONVENTION_TIPS),
+            style={"button_width": "90px"},
+        )
+        self.convention_note = widgets.HTML()
+        self.convention.observe(self._convention_changed, "value")
+        self.add_button = widgets.Button(description="add row", icon="plus")
+        self.add_button.on_click(lambda _: self.add())
+        self.error = ErrorLabel()
+        self._rows_box = widgets.VBox()
+        self.widget = widgets.VBox(
+            [
+                self.convention,
+                self.convention_note,
+                self._rows_box,
+                widgets.HBox([self.add_button, self.error.widget]),
+            ]
+        )
+        self._show_note()
+
+    def _show_note(self) -> None:
+        tip = _CONVENTION_TIPS[DH_CONVENTIONS.index(self.convention.value)]
+        self.convention_note.value = f"<small>{tip}</small>"
+
+    def _row(self, link: DHLink, limits: Any = None) -> DHRow:
+        return DHRow(link, self._scale, self.degrees, limits, self._row_changed, self._action)
+
+    def load(
+        self,
+        links: Sequence[DHLink],
+        scale: float,
+        degrees: bool | None = None,
+        limits: Any = None,
+    ) -> None:
+        """Replace the rows (no change callback); the convention is the first link's.
+
+        ``limits`` is an (n, 2) array of joint limits in core units, or ``None``.
+        """
+        self._scale = scale
+        if degrees is not None:
+            self.degrees = degrees
+        if links:
+            self.convention.unobserve(self._convention_changed, "value")
+            self.convention.value = links[0].convention
+            self.convention.observe(self._convention_changed, "value")
+            self._show_note()
+        self.rows = [
+            self._row(link, None if limits is None else limits[i]) for i, link in enumerate(links)
+        ]
+        self._refresh()
+
+    def _refresh(self) -> None:
+        for i, row in enumerate(self.rows):
+            row.set_title(i, len(self.rows))
+        self._rows_box.children = tuple(row.widget for row in self.rows)
+
+    def links(self) -> list[DHLink] | None:
+        """The rows as DH links in the selected convention, or ``None`` if one is invalid."""
+        if not self.rows:
+            self.error.show(_empty_table_message())
+            return None
+        links = [row.link(self.convention.value) for row in self.rows]
+        if any(link is None for link in links):
+            return None
+        self.error.clear()
+        return links  # type: ignore[return-value]
+
+    def error_items(self) -> Iterator[tuple[str, ErrorLabel]]:
+        """``(key, label)`` pairs: ``dh`` and ``dh[i].<field>``."""
+        yield "dh", self.error
+        for i, row in enumerate(self.rows):
+            yield f"dh[{i}]", row.error
+            for field, control in row.controls():
+                yield f"dh[{i}].{field}", control.error
+
+    def set_degrees(self, degrees: bool) -> None:
+        """Show angles in degrees or radians."""
+        self.degrees = degrees
+        for row in self.rows:
+            row.set_degrees(degrees)
+
+    def add(self, link: DHLink | None = None) -> None:
+        """Append a row (default: revolute, a = a tenth of the slider range)."""
+        order: list[int | None] = [*range(len(self.rows)), None]
+        new = link or DHLink(a=self._scale / 10.0, convention=self.convention.value)
+        self.rows.append(self._row(new))
+        self._refresh()
+        self._on_change("structure", order)
+
+    def _action(self, row: DHRow, action: str) -> None:
+        i = self.rows.index(row)
+        order: list[int | None] = list(range(len(self.rows)))
+        if action == "remove":
+            if len(self.rows) == 1:
+                self.error.show(_empty_table_message())
+                return
+            del self.rows[i]
+            del order[i]
+        else:
+            j = i - 1 if action == "up" else i + 1
+            if not 0 <= j < len(self.rows):
+                return
+            self.rows[i], self.rows[j] = self.rows[j], self.rows[i]
+            order[i], order[j] = order[j], order[i]
+        self._refresh()
+        self._on_change("structure", order)
+
+    def _row_changed(self, reason: str) -> None:
+        self._on_change(reason, None)
+
+    def _convention_changed(self, _: Any) -> None:
+        self._show_note()
+        self._on_change("link", None)

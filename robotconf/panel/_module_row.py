@@ -1,0 +1,215 @@
+"""One row of the module list: movement type, offsets ax, ay, az and coordinate q."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator
+from typing import Any
+
+import ipywidgets as widgets
+
+from .._errors import InvalidInputError
+from .._link import Link
+from .._module import MODULE_KINDS, Module
+from .._validation import check_finite_number
+from ._errors_display import ErrorLabel
+from ._number_control import NumberControl
+from ._ranges import q_range
+
+__all__ = ["ModuleRow", "KIND_OPTIONS"]
+
+#: Dropdown entries: the paper's codes 0–6 with names, then ``fixed`` (no code).
+KIND_OPTIONS = tuple((f"{code} {name}", name) for code, name in enumerate(MODULE_KINDS[:7])) + (
+    ("fixed", "fixed"),
+)
+
+_UNIT = {"Rx": "rad", "Ry": "rad", "Rz": "rad", "Tx": "length", "Ty": "length", "Tz": "length"}
+
+
+def _button(icon: str, tooltip: str) -> widgets.Button:
+    return widgets.Button(icon=icon, tooltip=tooltip, layout=widgets.Layout(width="32px"))
+
+
+class ModuleRow:
+    """Controls for one link of the chain.
+
+    A :class:`~robotconf.Module` gets a type dropdown and ax, ay, az, q controls; any
+    other link (a DH row inside a mixed robot) is shown read-only with its q control.
+
+    Parameters
+    ----------
+    link : Link
+        The link to show.
+    scale : float
+        Half-range of the length sliders.
+    degrees : bool
+        Show angles in degrees.
+    limits : (lo, hi) or None
+        Joint limits in core units for the q slider's default range.
+    on_change : callable
+        Called with ``(row, reason)`` after a user change; reason ``"q"`` or ``"link"``.
+    on_action : callable
+        Called with ``(row, action)`` for ``"up"``, ``"down"`` and ``"remove"``.
+
+    Examples
+    --------
+    >>> import robotconf as rc
+    >>> row = ModuleRow(rc.Module("Ry", a=(0, 0, 20)), 100.0, True, None, print, print)
+    >>> row.kind.options[2]
+    ('2 Ry', 'Ry')
+    >>> row.link()
+    Module('Ry', a=(0.0, 0.0, 20.0))
+    """
+
+    def __init__(
+        self,
+        link: Link,
+        scale: float,
+        degrees: bool,
+        limits: Any,
+        on_change: Callable[[ModuleRow, str], None],
+        on_action: Callable[[ModuleRow, str], None],
+    ):
+        self._base = link
+        self._scale = scale
+        self._on_change = on_change
+        self.is_module = isinstance(link, Module)
+        self.title = widgets.HTML(layout=widgets.Layout(width="36px"))
+        self.error = ErrorLabel()
+        self.up_button = _button("arrow-up", "move this module up (towards the base)")
+        self.down_button = _button("arrow-down", "move this module down (towards the tool)")
+        self.remove_button = _button("trash", "remove this module")
+        for button, action in (
+            (self.up_button, "up"),
+            (self.down_button, "down"),
+            (self.remove_button, "remove"),
+        ):
+            button.on_click(lambda _, action=action: on_action(self, action))
+        self.kind = widgets.Dropdown(
+            options=KIND_OPTIONS,
+            value=link.kind if isinstance(link, Module) else "none",
+            description="type",
+            layout=widgets.Layout(width="150px"),
+            style={"description_width": "34px"},
+        )
+        a = link.a if isinstance(link, Module) else (0.0, 0.0, 0.0)
+        self.offsets = tuple(
+            NumberControl(
+                name,
+                value,
+                -scale,
+                scale,
+                unit="",
+                on_change=self._link_changed,
+                label_width="24px",
+            )
+            for name, value in zip(("ax", "ay", "az"), a, strict=True)
+        )
+        unit: str = link.unit  # type: ignore[attr-defined]
+        lo, hi = q_range(unit, scale, limits, degrees)
+        self.q = NumberControl(
+            "q",
+            link.q,
+            lo,
+            hi,
+            angle=unit == "rad",
+            degrees=degrees,
+            unit="length" if unit == "length" else "",
+            on_change=self._q_changed,
+            label_width="24px",
+        )
+        self.kind.observe(self._kind_changed, "value")
+        buttons = [self.up_button, self.down_button, self.remove_button]
+        if self.is_module:
+            head = [self.title, self.kind, *buttons, self.error.widget]
+            controls = [*(c.widget for c in self.offsets), self.q.widget]
+        else:
+            summary = widgets.HTML(f"<code>{link!r}</code>")
+            head = [self.title, summary, *buttons, self.error.widget]
+            controls = [self.q.widget]
+        wrap = widgets.Layout(flex_flow="row wrap")
+        self.widget = widgets.VBox(
+            [
+                widgets.HBox(head, layout=widgets.Layout(align_items="center")),
+                widgets.HBox(controls, layout=wrap),
+            ],
+            layout=widgets.Layout(border="1px solid #ddd", padding="2px 4px", margin="2px 0"),
+        )
+        self._update_disabled()
+
+    # -- state --------------------------------------------------------------------------
+
+    def set_title(self, index: int, count: int) -> None:
+        """Label the row ``M{index + 1}`` and enable the move buttons that make sense."""
+        self.title.value = f"<b>M{index + 1}</b>"
+        self.up_button.disabled = index == 0
+        self.down_button.disabled = index == count - 1
+
+    def controls(self) -> Iterator[tuple[str, NumberControl]]:
+        """``(field, control)`` for the number controls of this row."""
+        if self.is_module:
+            yield from zip(("ax", "ay", "az"), self.offsets, strict=True)
+        yield "q", self.q
+
+    def error_items(self, prefix: str) -> Iterator[tuple[str, ErrorLabel]]:
+        """``(key, label)`` for every error label, keys like ``modules[1].ax``."""
+        yield prefix, self.error
+        for field, control in self.controls():
+            yield f"{prefix}.{field}", control.error
+
+    def set_degrees(self, degrees: bool) -> None:
+        """Show the angle coordinate in degrees or radians."""
+        self.q.set_degrees(degrees)
+
+    def link(self) -> Link | None:
+        """The link the controls describe, or ``None`` after showing why it is invalid."""
+        valid = True
+        for field, control in self.controls():
+            try:
+                check_finite_number(control.core_value, field)
+            except InvalidInputError as error:
+                control.error.show(str(error))
+                valid = False
+            else:
+                control.error.clear()
+        if not valid:
+            return None
+        q = self.q.core_value
+        try:
+            if not self.is_module:
+                link = self._base.with_q(q)  # type: ignore[attr-defined]
+            else:
+                a = tuple(c.core_value for c in self.offsets)
+                link = self._module(self.kind.value, a, q)
+        except InvalidInputError as error:
+            self.error.show(str(error))
+            return None
+        self.error.clear()
+        return link
+
+    def _module(self, kind: str, a: tuple[float, ...], q: float) -> Module:
+        base = self._base
+        assert isinstance(base, Module)
+        # The core's with_kind keeps name and limits (dropping limits across joint types).
+        return base.with_kind(kind).with_a(a).with_q(q)
+
+    # -- events -------------------------------------------------------------------------
+
+    def _update_disabled(self) -> None:
+        kind = self.kind.value if self.is_module else "joint"
+        for control in self.offsets:
+            control.disable(kind == "none")
+        self.q.disable(kind in ("none", "fixed"))
+
+    def _kind_changed(self, change: dict[str, Any]) -> None:
+        old, new = _UNIT.get(change["old"], ""), _UNIT.get(change["new"], "")
+        if old != new and new:
+            lo, hi = q_range(new, self._scale, None, self.q.degrees)
+            self.q.set_angle(new == "rad", lo, hi, unit="length" if new == "length" else "")
+        self._update_disabled()
+        self._on_change(self, "link")
+
+    def _link_changed(self, _: NumberControl) -> None:
+        self._on_change(self, "link")
+
+    def _q_changed(self, _: NumberControl) -> None:
+        self._on_change(self, "q")

@@ -1,0 +1,188 @@
+"""The Motion tab: a signal per coordinate, time settings, Run, and the results."""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Iterator, Mapping, Sequence
+from typing import Any
+
+import ipywidgets as widgets
+
+from .._errors import InvalidInputError
+from .._robot import Robot
+from .._simulation import METHODS, Motion, simulate
+from ..signals import Signal
+from ._errors_display import ErrorLabel
+from ._motion_results import MotionResults
+
+__all__ = ["MotionSection"]
+
+
+def _unit(robot: Robot, i: int) -> str:
+    return robot.modules[i].unit or "ignored"  # type: ignore[attr-defined]
+
+
+class MotionSection:
+    """Signals, t_end, dt, method and Run; ``motion`` is the last successful simulation.
+
+    Parameters
+    ----------
+    robot : callable
+        Returns the panel's current valid robot.
+    animate : callable
+        Plays a motion in the 3D pane.
+    t_end, dt : float
+        Initial time settings (s).
+    method : {"analytic", "numeric"}
+
+    Examples
+    --------
+    >>> import robotconf as rc
+    >>> robot = rc.Robot([rc.Module("Tz")], end_effector=(1, 0, 0))
+    >>> section = MotionSection(lambda: robot, lambda motion: None, t_end=1.0, dt=0.5)
+    >>> section.sync(robot)
+    >>> section.editors[0].kind.value = "Ramp"
+    >>> section.run_button.click()
+    >>> section.motion.table[("EE", "position", "z")].tolist()
+    [0.0, 0.5, 1.0]
+    """
+
+    def __init__(
+        self,
+        robot: Callable[[], Robot],
+        animate: Callable[[Motion], None],
+        *,
+        t_end: float = 10.0,
+        dt: float = 0.01,
+        method: str = "analytic",
+    ):
+        self._robot = robot
+        self.motion: Motion | None = None
+        self.editors: list[Any] = []
+        self.t_end = widgets.FloatText(
+            value=t_end, description="t_end (s)", layout=widgets.Layout(width="170px")
+        )
+        self.dt = widgets.FloatText(
+            value=dt, description="dt (s)", layout=widgets.Layout(width="170px")
+        )
+        self.method = widgets.ToggleButtons(
+            options=METHODS,
+            value=method,
+            tooltips=[
+                "exact chain rule with the signals' own derivatives",
+                "finite differences of sampled positions (Simulink's Derivative block)",
+            ],
+            style={"button_width": "80px"},
+        )
+        self.setting_errors = {name: ErrorLabel() for name in ("t_end", "dt", "method")}
+        self.run_button = widgets.Button(description="Run", icon="play", button_style="primary")
+        self.status = widgets.HTML()
+        self.run_error = ErrorLabel()
+        self.results = MotionResults(animate)
+        self._editors_box = widgets.VBox()
+        self.widget = widgets.VBox(
+            [
+                widgets.HTML(
+                    "<b>Signals</b> <small>(values in the coordinate's unit: rad or length; "
+                    "a held coordinate keeps its slider value)</small>"
+                ),
+                self._editors_box,
+                widgets.HBox([self.t_end, self.setting_errors["t_end"].widget]),
+                widgets.HBox([self.dt, self.setting_errors["dt"].widget]),
+                widgets.HBox([self.method, self.setting_errors["method"].widget]),
+                widgets.HBox([self.run_button, self.status, self.run_error.widget]),
+                self.results.widget,
+            ]
+        )
+        self.run_button.on_click(lambda _: self.run())
+
+    # -- editors ------------------------------------------------------------------------
+
+    def sync(self, robot: Robot, order: Sequence[int | None] | None = None) -> None:
+        """Match the editors to ``robot``'s coordinates.
+
+        ``order`` gives, for each new coordinate, the index of the old one it came from
+        (``None``: new), so a signal moves with its module when modules are reordered.
+        """
+        from ._signal_editor import SignalEditor
+
+        old = self.editors
+        if order is None:
+            order = list(range(robot.n))
+        editors = []
+        for i in range(robot.n):
+            source = order[i] if i < len(order) else None
+            if source is not None and source < len(old):
+                editor = old[source]
+                editor.name = f"q{i + 1}"
+                editor.label.value = f"<b>q{i + 1}</b> <small>({_unit(robot, i)})</small>"
+            else:
+                editor = SignalEditor(f"q{i + 1}", _unit(robot, i))
+            editors.append(editor)
+        self.editors = editors
+        self._editors_box.children = tuple(e.widget for e in editors)
+        self.mark_stale(robot)
+
+    def signals(self) -> dict[str, Signal] | None:
+        """Coordinate name → signal for the driven coordinates, or ``None`` if one is invalid."""
+        chosen: dict[str, Signal] = {}
+        valid = True
+        for editor in self.editors:
+            ok, signal = editor.build()
+            valid = valid and ok
+            if ok and signal is not None:
+                chosen[editor.name] = signal
+        return chosen if valid else None
+
+    def load(self, signals: Mapping[str, Signal], simulation: Mapping[str, Any] | None) -> None:
+        """Show saved signals (by coordinate name) and time settings."""
+        for editor in self.editors:
+            editor.load(signals.get(editor.name))
+        if simulation:
+            for name in ("t_end", "dt", "method"):
+                if name in simulation:
+                    getattr(self, name).value = simulation[name]
+
+    def settings(self) -> dict[str, Any]:
+        """``{"t_end", "dt", "method"}`` as typed."""
+        return {"t_end": self.t_end.value, "dt": self.dt.value, "method": self.method.value}
+
+    def error_items(self) -> Iterator[tuple[str, ErrorLabel]]:
+        """``(key, label)``: ``t_end``, ``dt``, ``method``, ``run`` and ``signals.q…``."""
+        yield from self.setting_errors.items()
+        yield "run", self.run_error
+        for editor in self.editors:
+            yield from editor.error_items(f"signals.{editor.name}")
+
+    # -- running ------------------------------------------------------------------------
+
+    def run(self) -> Motion | None:
+        """Simulate the current robot; on bad input keep the last motion and show why."""
+        for label in (*self.setting_errors.values(), self.run_error):
+            label.clear()
+        signals = self.signals()
+        if signals is None:
+            self.status.value = "<small>fix the signal marked in red</small>"
+            return None
+        robot = self._robot()
+        settings = self.settings()
+        try:
+            motion = simulate(
+                robot,
+                dict(signals),  # type: ignore[arg-type]
+                settings["t_end"],
+                settings["dt"],
+                method=settings["method"],
+            )
+        except InvalidInputError as error:
+            self.setting_errors.get(error.field, self.run_error).show(str(error))
+            self.status.value = ""
+            return None
+        self.motion = motion
+        self.status.value = f"<small>{motion.t.size} samples, {motion.method}</small>"
+        self.results.show(motion)
+        return motion
+
+    def mark_stale(self, robot: Robot) -> None:
+        """Say so when the robot changed since the last Run (the motion is kept)."""
+        if self.motion is not None and self.motion.robot != robot:
+            self.status.value = "<small>the robot changed since this run: press Run</small>"
