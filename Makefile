@@ -1,4 +1,4 @@
-# Two commands on a fresh machine: `make lab` opens the configurator notebooks,
+# Two commands on a fresh machine: `make lab` opens the configurator notebook,
 # `make test` runs the whole suite. Both create .venv and (re)install the package with
 # its dev extra whenever pyproject.toml changes.
 
@@ -18,8 +18,11 @@ $(STAMP): pyproject.toml
 
 venv: $(STAMP)
 
+# Jupyter refuses to run as root unless told to (containers often are root).
+ROOT_FLAG := $(if $(filter 0,$(shell id -u)),--allow-root,)
+
 lab: $(STAMP)
-	$(BIN)/jupyter lab notebooks/
+	$(BIN)/jupyter lab $(ROOT_FLAG) notebooks/configurator.ipynb
 
 lint: $(STAMP)
 	$(BIN)/ruff check .
@@ -31,7 +34,7 @@ test: lint
 	MPLBACKEND=Agg ROBOTCONF_FAST=1 $(BIN)/python -m pytest --nbmake robotconf tests $(NOTEBOOK_DIRS)
 
 bench: $(STAMP)
-	$(BIN)/python benchmarks/bench_kinematics.py
+	for script in benchmarks/bench_*.py; do $(BIN)/python $$script || exit 1; done
 
 clean:
 	rm -rf $(VENV) .pytest_cache .ruff_cache build *.egg-info

@@ -141,6 +141,7 @@ class Configurator:
         )
         self.files = FilesSection(self.to_json, self._load_bytes)
         self.ee_label = widgets.HTML()
+        self.ee_label.add_class("robotconf-ee")
         factory = scene_factory or default_scene_factory(scene_height)
         self.scene = factory(robot)
         self.results = widgets.Tab(

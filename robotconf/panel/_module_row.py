@@ -117,6 +117,9 @@ class ModuleRow:
             on_change=self._q_changed,
             label_width="24px",
         )
+        # Stable hooks for browser tests and for instructors' custom CSS.
+        self.kind.add_class("robotconf-module-kind")
+        self.q.slider.add_class("robotconf-module-q")
         self.kind.observe(self._kind_changed, "value")
         buttons = [self.up_button, self.down_button, self.remove_button]
         if self.is_module:

@@ -1,0 +1,264 @@
+"""The 3D scene against a recording fake viewer: what it creates, what an update sends,
+and that every number it shows is the core's."""
+
+from __future__ import annotations
+
+import json
+import re
+
+import numpy as np
+import pytest
+
+import robotconf as rc
+from robotconf.scene import RecordingChannel, Scene
+from robotconf.scene._commands import ROOT, SceneLog, pack_ops, transforms_op
+from robotconf.scene._drawing import RobotDrawing, robot_size
+from robotconf.scene._placement import align_y, compose, quaternions
+from robotconf.scene._widget import WidgetChannel, _coalesce
+
+from .conftest import L1, L2, L3
+
+ROBOT_PATH = f"{ROOT}/robot"
+
+
+@pytest.fixture
+def scene(paper_robot: rc.Robot) -> Scene:
+    return Scene(paper_robot, channel=RecordingChannel())
+
+
+def _transforms(scene: Scene) -> dict[str, np.ndarray]:
+    """The last transform sent for every path, as 4×4 matrices."""
+    out: dict[str, np.ndarray] = {}
+    for op in scene.channel.ops:
+        if op.content["op"] == "transforms":
+            data = np.frombuffer(op.buffers[0], dtype=np.float32).reshape(-1, 4, 4)
+            for path, matrix in zip(op.content["paths"], data, strict=True):
+                out[path] = matrix.T  # column-major on the wire
+    return out
+
+
+def test_paper_robot_labels_carry_the_core_numbers(scene: Scene) -> None:
+    assert scene.labels() == [
+        "M1 (0.0, 0.0, 0.0)",
+        f"M2 (0.0, 0.0, {L1:.1f})",
+        f"M3 ({L2:.1f}, 0.0, {L1:.1f})",
+        f"EE ({L2 + L3:.1f}, 0.0, {L1:.1f})",
+    ]
+    labels = [op for op in scene.channel.ops if op.content["op"] == "labels"][-1]
+    assert labels.content["texts"][-1] == "EE (70.0, 0.0, 20.0)"
+
+
+def test_spheres_sit_at_the_core_positions(scene: Scene, paper_robot: rc.Robot) -> None:
+    q = np.array([0.4, -0.7, 1.1])
+    scene.update(q)
+    sent = _transforms(scene)
+    origins = paper_robot.frame_origins(q)
+    for i in range(3):
+        np.testing.assert_allclose(
+            sent[f"{ROBOT_PATH}/modules/{i}/sphere"][:3, 3], origins[i], atol=1e-4
+        )
+    ee = sent[f"{ROBOT_PATH}/ee/sphere"][:3, 3]
+    np.testing.assert_allclose(ee, paper_robot.end_effector(q), atol=1e-4)
+    # Independent check of the EE by hand: R_z(q1)·(l2 cos q2 + l3 cos(q2+q3), 0, ...).
+    q1, q2, q3 = q
+    reach = L2 * np.cos(q2) + L3 * np.cos(q2 + q3)
+    height = L1 - L2 * np.sin(q2) - L3 * np.sin(q2 + q3)
+    np.testing.assert_allclose(ee, [reach * np.cos(q1), reach * np.sin(q1), height], atol=1e-4)
+
+
+def test_objects_are_created_once_and_update_sends_only_transforms(scene: Scene) -> None:
+    created = [c["path"] for c in scene.channel.commands("set_object")]
+    assert len(created) == len(set(created)) == len(scene._drawing.items)
+    scene.channel.clear()
+    for k in range(5):
+        scene.update([0.1 * k, 0.2, -0.3])
+    assert set(scene.channel.kinds()) == {"transforms", "labels"}
+    assert len(scene.channel.messages) == 5
+    assert all(len(message) <= 2 for message in scene.channel.messages)
+
+
+def test_labels_are_not_resent_when_unchanged(scene: Scene) -> None:
+    scene.update([0.0, 0.0, 0.0])
+    scene.channel.clear()
+    scene.update([1e-6, 0.0, 0.0])  # labels round to the same text
+    assert scene.channel.kinds() == ["transforms"]
+
+
+def test_drawn_items_follow_the_paper_figure(paper_robot: rc.Robot) -> None:
+    drawing = RobotDrawing(paper_robot, robot_size(paper_robot))
+    colors = {item.path: item.color for item in drawing.items}
+    assert colors["ee/sphere"] == 0xD62728  # red end-effector
+    assert all(colors[f"modules/{i}/sphere"] == 0x2CA02C for i in range(3))  # green joints
+    assert {item.shape for item in drawing.items if item.path.endswith("/joint")} == {"cylinder"}
+    assert robot_size(paper_robot) == pytest.approx(L1 + L2 + L3)
+
+
+def test_prismatic_joints_are_boxes_and_grow_with_q() -> None:
+    robot = rc.preset("cartesian")
+    scene = Scene(robot, channel=RecordingChannel())
+    shapes = {item.path: item.shape for item in scene._drawing.items}
+    assert [shapes[f"modules/{i}/joint"] for i in range(3)] == ["box", "box", "box"]
+    scene.update([0.0, 0.0, 0.0])
+    short = _transforms(scene)[f"{ROBOT_PATH}/modules/2/joint"]
+    scene.update([0.0, 0.0, 0.5 * robot_size(robot)])
+    long = _transforms(scene)[f"{ROBOT_PATH}/modules/2/joint"]
+    # A unit box scaled along its length: the column norm is the drawn length.
+    assert np.linalg.norm(long[:3, 1]) > np.linalg.norm(short[:3, 1])
+
+
+def test_zero_length_links_draw_nothing_and_no_nan(paper_robot: rc.Robot) -> None:
+    # M1 sits at the base: the first link has zero length.
+    scene = Scene(paper_robot, channel=RecordingChannel())
+    sent = _transforms(scene)
+    first = sent[f"{ROBOT_PATH}/links/0"]
+    assert np.all(np.isfinite(np.concatenate(list(sent.values()))))
+    assert np.abs(first[:3, :3]).max() < 1e-6
+    robot = rc.Robot([rc.Module("none"), rc.Module("Rz")], end_effector=(0, 0, 0))
+    empty = Scene(robot, channel=RecordingChannel())
+    assert all(np.all(np.isfinite(m)) for m in _transforms(empty).values())
+
+
+def test_structure_change_rebuilds_and_value_change_does_not(scene: Scene, paper_robot) -> None:
+    scene.channel.clear()
+    scene.set_robot(paper_robot.with_q([0.3, 0.2, 0.1]))
+    assert "set_object" not in scene.channel.kinds()
+    scene.channel.clear()
+    scene.set_robot(paper_robot.with_module(1, rc.Module("Tz", a=(0, 0, L1))))
+    kinds = scene.channel.kinds()
+    assert kinds[0] == "delete" and "set_object" in kinds
+    assert scene.labels()[-1] == "EE (70.0, 0.0, 20.0)"
+
+
+def test_frames_and_labels_toggle_visibility(scene: Scene) -> None:
+    scene.channel.clear()
+    scene.show_frames(True)
+    scene.show_labels(False)
+    ops = scene.channel.ops
+    assert [op.content["value"] for op in ops] == [True, False]
+    assert all(p.endswith("/frame") for p in ops[0].content["paths"])
+    assert all(p.endswith("/label") for p in ops[1].content["paths"])
+
+
+def test_scene_log_replays_compactly(scene: Scene) -> None:
+    for k in range(50):
+        scene.update([0.01 * k, 0.0, 0.0])
+    ops = scene._log.ops()
+    assert sum(op.content["op"] == "transforms" for op in ops) == 1
+    assert sum(op.content["op"] == "labels" for op in ops) == 1
+    replayed = _transforms_from(ops)
+    np.testing.assert_allclose(
+        replayed[f"{ROBOT_PATH}/ee/sphere"][:3, 3], scene.robot.end_effector(scene.q), atol=1e-4
+    )
+
+
+def _transforms_from(ops) -> dict[str, np.ndarray]:  # type: ignore[no-untyped-def]
+    channel = RecordingChannel()
+    channel.send(ops)
+    holder = type("Holder", (), {"channel": channel})
+    return _transforms(holder)  # type: ignore[arg-type]
+
+
+def test_log_forgets_a_deleted_subtree() -> None:
+    log = SceneLog()
+    log.record(("set_object", "/a/b"), transforms_op(["/a/b"], np.eye(4)[None]))
+    log.record(("set_object", "/ab"), transforms_op(["/ab"], np.eye(4)[None]))
+    log.forget("/a")
+    assert len(log) == 1
+
+
+def test_widget_channel_replays_to_a_new_view_and_coalesces(paper_robot: rc.Robot) -> None:
+    scene = rc.view(paper_robot, display=False, max_rate=None)
+    channel = scene.channel
+    assert isinstance(channel, WidgetChannel)
+    sent: list[tuple[dict, list]] = []
+    scene.widget.send = lambda content, buffers=None: sent.append((content, buffers))
+    channel._on_message(scene.widget, {"kind": "hello", "view": "v1"}, [])
+    content, buffers = sent[-1]
+    assert content["kind"] == "replay" and content["view"] == "v1"
+    assert len(buffers) >= 1
+    json.dumps(content)  # the comm sends JSON plus binary buffers
+    a = transforms_op(["/x"], np.eye(4)[None])
+    b = transforms_op(["/x"], 2 * np.eye(4)[None])
+    assert _coalesce([a, b]) == [b]
+
+
+def test_update_rejects_bad_q_and_keeps_the_pose(scene: Scene) -> None:
+    scene.update([0.1, 0.2, 0.3])
+    with pytest.raises(rc.InvalidInputError, match=r"q.*finite"):
+        scene.update([0.1, np.nan, 0.3])
+    with pytest.raises(rc.InvalidInputError, match=r"q"):
+        scene.update([0.1, 0.2])
+    with pytest.raises(rc.InvalidInputError, match="one configuration"):
+        scene.update(np.zeros((4, 3)))
+    np.testing.assert_allclose(scene.q, [0.1, 0.2, 0.3])
+
+
+def test_bad_constructor_arguments_are_named(paper_robot: rc.Robot) -> None:
+    with pytest.raises(rc.InvalidInputError, match="robot"):
+        Scene("not a robot", channel=RecordingChannel())  # type: ignore[arg-type]
+    with pytest.raises(rc.InvalidInputError, match="height"):
+        Scene(paper_robot, height=5, channel=RecordingChannel())
+
+
+def test_animation_tracks_follow_the_motion(scene: Scene, paper_robot: rc.Robot) -> None:
+    motion = rc.simulate(paper_robot, {"q3": rc.signals.RepeatingSequence()}, t_end=2, dt=0.5)
+    scene.animate(motion, speed=2.0)
+    command = scene.channel.commands("set_animation")[-1]
+    by_path = {a["path"]: a["clip"] for a in command["animations"]}
+    tracks = {t["name"]: t for t in by_path[f"{ROBOT_PATH}/ee/sphere"]["tracks"]}
+    assert tracks[".position"]["times"] == [0.0, 0.25, 0.5, 0.75, 1.0]  # halved by speed 2
+    positions = np.array(tracks[".position"]["values"]).reshape(-1, 3)
+    np.testing.assert_allclose(positions, motion.position[:, -1], atol=1e-5)
+    assert scene.channel.ops[-2].content["texts"] == ["M1", "M2", "M3", "EE"]
+    with pytest.raises(rc.InvalidInputError, match="speed"):
+        scene.animate(motion, speed=0)
+    with pytest.raises(rc.InvalidInputError, match="motion"):
+        scene.animate("not a motion")
+
+
+def test_point_cloud_is_packed_and_validated(scene: Scene) -> None:
+    import umsgpack
+
+    scene.add_point_cloud("workspace", np.random.default_rng(1).random((20, 3)))
+    op = scene.channel.ops[-1]
+    command = umsgpack.unpackb(op.buffers[0])
+    assert command["type"] == "set_object" and command["path"].endswith("clouds/workspace")
+    with pytest.raises(rc.InvalidInputError, match="points"):
+        scene.add_point_cloud("w", np.zeros((4, 2)))
+    with pytest.raises(rc.InvalidInputError, match="color"):
+        scene.add_point_cloud("w", np.zeros((4, 3)), color=(2, 0, 0))
+    with pytest.raises(rc.InvalidInputError, match="name"):
+        scene.add_point_cloud("../x", np.zeros((4, 3)))
+
+
+def test_export_html_is_self_contained(scene: Scene, tmp_path) -> None:  # type: ignore[no-untyped-def]
+    motion = rc.simulate(scene.robot, {"q1": rc.signals.Sine(amplitude=1.0)}, t_end=1, dt=0.1)
+    scene.animate(motion)
+    path = scene.export_html(tmp_path / "robot.html")
+    text = path.read_text()
+    assert re.search(r"<script[^>]+src=", text) is None
+    assert "set_animation" in text and "rcLoadMeshcat" in text
+    assert len(text) > 800_000  # meshcat's viewer is inlined
+    log = text.split('id="robotconf-scene-log" type="application/json">')[1].split("</script>")[0]
+    assert json.loads(log)["ops"]
+
+
+def test_placement_helpers_match_hand_values() -> None:
+    for d in np.array([[1, 0, 0], [0, 0, 1], [0, -1, 0], [0.6, 0.0, 0.8]]):
+        r = align_y(d)
+        np.testing.assert_allclose(r @ [0, 1, 0], d, atol=1e-12)
+        np.testing.assert_allclose(r @ r.T, np.eye(3), atol=1e-12)
+        assert np.linalg.det(r) == pytest.approx(1.0)
+    half = np.sqrt(0.5)
+    rz90 = np.array([[0, -1, 0], [1, 0, 0], [0, 0, 1]], dtype=float)
+    np.testing.assert_allclose(quaternions(rz90), [0, 0, half, half], atol=1e-12)
+    rx180 = np.diag([1.0, -1, -1])
+    np.testing.assert_allclose(np.abs(quaternions(rx180)), [1, 0, 0, 0], atol=1e-12)
+    m = compose(np.array([1.0, 2, 3]), rz90, np.array([1.0, 2, 1]))
+    np.testing.assert_allclose(m @ [0, 1, 0, 1], [-2 + 1, 0 + 2, 3, 1])
+
+
+def test_pack_ops_indexes_buffers() -> None:
+    a = transforms_op(["/a"], np.eye(4)[None])
+    contents, buffers = pack_ops([a, a])
+    assert [c["buffers"] for c in contents] == [[0], [1]] and len(buffers) == 2
