@@ -42,3 +42,21 @@ def test_readme_motion_and_checker_examples_run(tmp_path, monkeypatch):
 def test_readme_shows_the_two_commands():
     text = README.read_text(encoding="utf-8")
     assert "make lab" in text and "make test" in text
+
+
+def test_readme_scene_and_library_examples_run(tmp_path, monkeypatch):
+    import matplotlib
+
+    import robotconf as rc
+
+    matplotlib.use("Agg")
+    monkeypatch.chdir(tmp_path)
+    namespace: dict = {}
+    for block in python_blocks()[:4]:
+        exec(compile(block, str(README), "exec"), namespace)  # noqa: S102
+    scene = namespace["scene"]
+    assert scene.labels()[-1] == rc.format_point("EE", namespace["robot"].end_effector(scene.q))
+    assert (tmp_path / "robot.html").stat().st_size > 800_000
+    assert rc.load(tmp_path / "ur5.json") == namespace["ur5"]
+    assert namespace["ws"].points.shape == (100_000, 3)
+    assert "<robot" in namespace["urdf"]
