@@ -24,40 +24,39 @@ Kinds and their parameters (Simulink's blocks; see :mod:`robotconf.signals`)::
 
 from __future__ import annotations
 
+import dataclasses
 import math
 import re
 from typing import Any
 
 from ._errors import InvalidInputError
-from .signals import (
-    Constant,
-    Cubic,
-    Quintic,
-    Ramp,
-    RepeatingSequence,
-    Signal,
-    Sine,
-    Step,
-    Trapezoidal,
-)
+from .signals import SIGNAL_TYPES, Signal
 
 __all__ = ["parse_signal_spec", "parse_signal", "SIGNAL_KINDS", "SPEC_HELP", "MAX_SPEC_LENGTH"]
 
 #: Longest spec accepted (characters): a command line, not a data file.
 MAX_SPEC_LENGTH = 10_000
 
-_POINT_TO_POINT = ("start", "end", "duration", "start_time")
+
+def _kind(name: str) -> tuple[type[Signal], tuple[str, ...], tuple[str, ...]]:
+    # Parameters are the signal class's own public fields, so the spec never drifts.
+    cls = SIGNAL_TYPES[name]
+    public = dataclasses.fields(cls)  # type: ignore[arg-type]
+    fields = tuple(f.name for f in public if f.init and not f.name.startswith("_"))
+    lists = fields if name == "RepeatingSequence" else ()
+    return cls, fields, lists
+
 
 #: kind → (signal class, parameters, parameters that take a list)
 SIGNAL_KINDS: dict[str, tuple[type[Signal], tuple[str, ...], tuple[str, ...]]] = {
-    "constant": (Constant, ("level",), ()),
-    "step": (Step, ("step_time", "initial", "final"), ()),
-    "ramp": (Ramp, ("slope", "start_time", "initial_output"), ()),
-    "sine": (Sine, ("amplitude", "bias", "frequency", "phase"), ()),
-    "repeating": (RepeatingSequence, ("times", "values"), ("times", "values")),
-    "cubic": (Cubic, _POINT_TO_POINT, ()),
-    "quintic": (Quintic, _POINT_TO_POINT, ()),
-    "trapezoidal": (Trapezoidal, (*_POINT_TO_POINT, "accel_fraction"), ()),
+    "constant": _kind("Constant"),
+    "step": _kind("Step"),
+    "ramp": _kind("Ramp"),
+    "sine": _kind("Sine"),
+    "repeating": _kind("RepeatingSequence"),
+    "cubic": _kind("Cubic"),
+    "quintic": _kind("Quintic"),
+    "trapezoidal": _kind("Trapezoidal"),
 }
 
 _KIND_ALIASES = {"const": "constant", "sin": "sine", "repeating_sequence": "repeating"}

@@ -12,32 +12,17 @@ from collections.abc import Callable, Iterator
 import ipywidgets as widgets
 
 from .._errors import InvalidInputError
-from ..signals import (
-    Constant,
-    Cubic,
-    Quintic,
-    Ramp,
-    RepeatingSequence,
-    Signal,
-    Sine,
-    Step,
-    Trapezoidal,
-)
+from ..signals import SIGNAL_TYPES as CORE_SIGNAL_TYPES
+from ..signals import RepeatingSequence, Signal
 from ._errors_display import ErrorLabel
 from ._repeating_table import RepeatingTable
 
 __all__ = ["SignalEditor", "SIGNAL_TYPES"]
 
-#: The signal types offered, in Simulink's order, then the point-to-point profiles.
+#: The signal types offered: the core's registry (Simulink's order, then the
+#: point-to-point profiles) without the composites, which have no form of their own.
 SIGNAL_TYPES: dict[str, type[Signal]] = {
-    "Constant": Constant,
-    "Step": Step,
-    "Ramp": Ramp,
-    "Sine": Sine,
-    "RepeatingSequence": RepeatingSequence,
-    "Cubic": Cubic,
-    "Quintic": Quintic,
-    "Trapezoidal": Trapezoidal,
+    name: cls for name, cls in CORE_SIGNAL_TYPES.items() if name not in ("Affine", "Sum")
 }
 _HOLD = "hold"
 _CUSTOM = "custom"
