@@ -97,7 +97,7 @@ def plot_motion(
     >>> len(fig.axes), fig.axes[-1].get_xlabel()
     (9, 'time (s)')
     """
-    from matplotlib.figure import Figure
+    from ._figures import new_figure
 
     if point not in motion.points:
         raise InvalidInputError("point", point, f"one of {motion.points}", problem="unknown point")
@@ -109,7 +109,7 @@ def plot_motion(
         ("acceleration", motion.acceleration, f"{length_unit}/s²"),
     )
     note = kink_note(motion)
-    fig = Figure(figsize=figsize, layout="constrained")
+    fig = new_figure(figsize)
     axes = fig.subplots(3, 3, sharex=True, squeeze=False)
     t = motion.t
     kinks = np.unique(np.concatenate([np.empty(0), *motion.kinks().values()]))

@@ -107,9 +107,9 @@ def plot_robot(
     frames = _check_flag(frames, "frames")
     points = robot_points(robot, q)
     if ax is None:
-        from matplotlib.figure import Figure
+        from ._figures import new_figure
 
-        fig = Figure(figsize=figsize, layout="constrained")
+        fig = new_figure(figsize)
         ax = fig.add_subplot(projection="3d")
     elif getattr(ax, "name", None) != "3d":
         raise InvalidInputError(

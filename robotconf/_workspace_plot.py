@@ -58,7 +58,7 @@ def plot_workspace(
     >>> [ax.get_title() for ax in fig.axes][1:]
     ['XY (top view)', 'XZ (front view)', 'YZ (side view)']
     """
-    from matplotlib.figure import Figure
+    from ._figures import new_figure
 
     if isinstance(max_points, bool) or not isinstance(max_points, (int, np.integer)):
         raise InvalidInputError("max_points", max_points, "an integer ≥ 1")
@@ -67,7 +67,7 @@ def plot_workspace(
     step = max(1, -(-len(ws) // int(max_points)))
     shown = ws.points[::step]
     labels = [f"{axis} [{length_unit}]" for axis in "xyz"]
-    fig = Figure(figsize=figsize, layout="constrained")
+    fig = new_figure(figsize)
     ax3d = fig.add_subplot(2, 2, 1, projection="3d")
     ax3d.scatter(shown[:, 0], shown[:, 1], shown[:, 2], s=1, color=color, alpha=0.3)
     ax3d.set_xlabel(labels[0])
