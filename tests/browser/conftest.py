@@ -52,7 +52,12 @@ class Lab:
         self.process = process
 
     def url(self, notebook: str) -> str:
-        return f"http://127.0.0.1:{self.port}/lab/tree/{notebook}?token={self.token}"
+        # One fresh workspace per notebook: otherwise Lab restores the previous test's tabs.
+        workspace = Path(notebook).stem
+        return (
+            f"http://127.0.0.1:{self.port}/lab/workspaces/{workspace}/tree/{notebook}"
+            f"?reset&token={self.token}"
+        )
 
 
 @pytest.fixture(scope="session")

@@ -7,6 +7,9 @@ from pathlib import Path
 import nbformat
 import numpy as np
 
+#: The notebook in the visible tab (another tab's cells may be in the page, hidden).
+NOTEBOOK = ".jp-NotebookPanel:not(.lm-mod-hidden) .jp-Notebook"
+
 
 def write_notebook(path: Path, cells: list[str]) -> None:
     notebook = nbformat.v4.new_notebook()
@@ -21,7 +24,7 @@ def write_notebook(path: Path, cells: list[str]) -> None:
 
 def open_notebook(page, url: str) -> None:  # type: ignore[no-untyped-def]
     page.goto(url)
-    page.wait_for_selector(".jp-Notebook .jp-Cell", timeout=90_000)
+    page.wait_for_selector(f"{NOTEBOOK} .jp-Cell", timeout=90_000)
     # The status bar says Idle once the kernel is connected and ready for code.
     page.get_by_text("Python 3 (ipykernel) | Idle").wait_for(timeout=90_000)
     page.wait_for_timeout(500)
@@ -29,7 +32,7 @@ def open_notebook(page, url: str) -> None:  # type: ignore[no-untyped-def]
 
 def run_cell(page, index: int) -> None:  # type: ignore[no-untyped-def]
     """Select cell ``index`` (0-based) and run it with Shift+Enter."""
-    cell = page.locator(".jp-Notebook .jp-Cell").nth(index)
+    cell = page.locator(f"{NOTEBOOK} .jp-Cell").nth(index)
     cell.locator(".jp-InputPrompt").click()
     page.keyboard.press("Shift+Enter")
     # Done when the prompt shows an execution count, e.g. "[3]:".
