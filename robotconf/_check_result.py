@@ -29,9 +29,9 @@ class MatrixCheck:
         ``"transposed_matrix"``, ``"rotation_direction"``, ``"sign_error"``,
         ``"offset_after_rotation"``, ``"missing_offset"``, ``"dh_convention"``,
         ``"degrees_as_radians"``, ``"radians_as_degrees"``, ``"row_swap"``,
-        ``"column_swap"``, ``"shape"``.
-    student : sympy.Matrix
-        The student's matrix as understood.
+        ``"column_swap"``, ``"swapped_d_a"``, ``"shape"``, ``"no_answer"``.
+    student : sympy.Matrix or None
+        The student's matrix as understood; ``None`` when there is no answer yet.
     expected : ExpectedMatrix
     """
 

@@ -13,10 +13,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from ._check_result import MatrixCheck, show_entry
+from ._check_hints import NO_ANSWER, close, entries_text, entry_hints, explain, shape_hint
+from ._check_result import MatrixCheck
 from ._errors import InvalidInputError
 from ._expected import ExpectedMatrix, as_expected, evaluate, sample_points
-from ._mistakes import Candidate, context_candidates, generic_candidates
+from ._mistakes import context_candidates, generic_candidates
 from ._student_parser import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -52,15 +53,36 @@ def _student_entry(value: Any, table: dict[str, Any], limits: ParserLimits, wher
     raise InvalidInputError(where, value, "a number or a formula", problem="not a number:")
 
 
-def _student_matrix(student: Any, table: dict[str, Any], limits: ParserLimits) -> sympy.Matrix:
+def _parse_text(text: str, table: dict[str, Any], limits: ParserLimits, scalar: bool) -> Any:
+    """Parse a typed answer; for a 1×1 answer a bare formula such as ``2*sin(q2)`` is fine."""
     import sympy
 
+    head = text.lstrip()
+    if scalar and not head.startswith(("[", "Matrix")):
+        if not head.startswith("("):
+            return sympy.Matrix([[parse_expression(text, table.values(), limits)]])
+        try:  # "(2*sin(q2))" is a formula, "((1,),)" a matrix
+            return sympy.Matrix([[parse_expression(text, table.values(), limits)]])
+        except InvalidInputError:
+            pass
+    return parse_matrix(text, table.values(), limits)
+
+
+def _student_matrix(
+    student: Any, table: dict[str, Any], limits: ParserLimits, scalar: bool = False
+) -> sympy.Matrix:
+    import sympy
+
+    if isinstance(student, np.ndarray) and student.ndim == 0:
+        student = student.item()
     if isinstance(student, str):
-        matrix = parse_matrix(student, table.values(), limits)
+        matrix = _parse_text(student, table, limits, scalar)
     elif isinstance(student, sympy.MatrixBase):
         matrix = sympy.Matrix(student)
     elif isinstance(student, bytes):
         raise InvalidInputError("student", student, _STUDENT_ALLOWED, problem="bytes, not text:")
+    elif scalar and isinstance(student, (int, float, np.number, sympy.Expr)):
+        matrix = sympy.Matrix([[_student_entry(student, table, limits, "student")]])
     else:
         rows = student.tolist() if isinstance(student, np.ndarray) else student
         if not isinstance(rows, (list, tuple)) or not rows:
@@ -119,6 +141,35 @@ def _fit_shapes(student: Any, expected: Any) -> Any:
     return column
 
 
+def _compare(
+    matrix: Any, reference: ExpectedMatrix, tol: float, samples: int, seed: int
+) -> tuple[dict[str, np.ndarray], int, np.ndarray, np.ndarray, set[tuple[int, int]]]:
+    """Sample both matrices (same shape) and find the wrong entries.
+
+    Returns the sample points, their number K, the student's and the expected values
+    (shape (K, rows, cols)) and the wrong entries (0-based).
+    """
+    expected_m = reference.matrix
+    names = sorted(
+        {s.name for s in matrix.free_symbols | expected_m.free_symbols}
+        | set(reference.robot.coordinate_names if reference.robot is not None else ())
+    )
+    k = int(samples) if names else 1
+    env = sample_points(names, k, seed)
+    s_values = _values(matrix, env, k)
+    e_values = _values(expected_m, env, k)
+    right = close(s_values, e_values, tol)
+    wrong = set()
+    for r in range(matrix.rows):
+        for c in range(matrix.cols):
+            if right[r, c]:
+                continue
+            undefined = np.isnan(s_values[:, r, c]).any() or np.isnan(e_values[:, r, c]).any()
+            if not _proven_equal(matrix[r, c], expected_m[r, c], full=bool(undefined)):
+                wrong.add((r, c))
+    return env, k, s_values, e_values, wrong
+
+
 # -- comparison -----------------------------------------------------------------------
 
 
@@ -128,12 +179,6 @@ def _values(matrix: Any, env: dict[str, np.ndarray], k: int) -> np.ndarray:
         for c in range(matrix.cols):
             out[:, r, c] = evaluate(matrix[r, c], env, k)
     return out
-
-
-def _close(a: np.ndarray, b: np.ndarray, tol: float) -> np.ndarray:
-    with np.errstate(invalid="ignore"):
-        ok = np.abs(a - b) <= tol * np.maximum(1.0, np.abs(b))
-    return np.all(ok, axis=0)
 
 
 def _proven_equal(a: Any, b: Any, full: bool) -> bool:
@@ -152,106 +197,6 @@ def _proven_equal(a: Any, b: Any, full: bool) -> bool:
         return False
 
 
-def _entry_text(r: int, c: int) -> str:
-    return f"({r + 1},{c + 1})"
-
-
-def _entries_text(entries: Iterable[tuple[int, int]]) -> str:
-    return ", ".join(_entry_text(r, c) for r, c in sorted(entries))
-
-
-def _explain(
-    candidates: list[Candidate], wrong: set, s_values: np.ndarray, e_values: np.ndarray, tol: float
-) -> tuple[list[Candidate], list[tuple[Candidate, set]]]:
-    """Candidates that explain all wrong entries, and those that explain some of them.
-
-    A full explanation: the student's answer equals the candidate wherever the mistake
-    changes anything, and every wrong entry is such a place. A partial one: the mistake
-    explains some wrong entries and none of the entries it changes is right (a right
-    entry there would contradict the mistake); the rest is another error.
-    """
-    full, partial = [], []
-    for candidate in candidates:
-        if candidate.values.shape != e_values.shape:
-            continue
-        changed = {tuple(x) for x in np.argwhere(~_close(candidate.values, e_values, tol))}
-        if not changed:
-            continue
-        matches = {tuple(x) for x in np.argwhere(_close(s_values, candidate.values, tol))}
-        explained = wrong & changed & matches
-        if explained == wrong and changed <= matches:
-            full.append(candidate)
-        elif explained and changed <= wrong:
-            partial.append((candidate, explained))
-    partial.sort(key=lambda item: -len(item[1]))
-    return full, partial
-
-
-def _entry_hints(
-    entries: set,
-    student: Any,
-    expected: Any,
-    s_values: np.ndarray,
-    e_values: np.ndarray,
-    tol: float,
-    reveal: bool,
-) -> tuple[list[str], list[str]]:
-    import sympy
-
-    hints, codes = [], []
-    negated = {
-        (r, c)
-        for r, c in entries
-        if _close(s_values[:, r, c], -e_values[:, r, c], tol)
-        and not _close(e_values[:, r, c], np.zeros_like(e_values[:, r, c]), tol)
-    }
-    sine = {(r, c) for r, c in negated if expected[r, c].has(sympy.sin)}
-    if sine:
-        codes.append("sign_error")
-        parts = [
-            f"entry {_entry_text(r, c)}: expected {show_entry(expected[r, c])}, you wrote "
-            f"{show_entry(student[r, c])}"
-            if reveal
-            else f"entry {_entry_text(r, c)}"
-            for r, c in sorted(sine)
-        ]
-        hints.append(
-            "; ".join(parts) + " — a sign error on a sine term: the rotation goes the wrong "
-            "way. A positive rotation about x has −sin in (2,3), about y +sin in (1,3), about "
-            "z −sin in (1,2)."
-        )
-    if negated - sine:
-        codes.append("sign_error")
-        hints.append(f"Entries {_entries_text(negated - sine)} have the wrong sign.")
-    rest = entries - negated
-    cols = expected.cols
-    missing = {
-        (r, c)
-        for r, c in rest
-        if expected.shape == (4, 4)
-        and c == cols - 1
-        and r < 3
-        and _close(s_values[:, r, c], np.zeros_like(s_values[:, r, c]), tol)
-    }
-    if missing:
-        codes.append("missing_offset")
-        hints.append(
-            f"Entries {_entries_text(missing)} of the translation column are 0 where the "
-            "answer is not: an offset (a translation) seems to be missing."
-        )
-    for r, c in sorted(rest - missing)[:8]:
-        if reveal:
-            hints.append(
-                f"entry {_entry_text(r, c)}: expected {show_entry(expected[r, c])}, "
-                f"you wrote {show_entry(student[r, c])}."
-            )
-        else:
-            hints.append(
-                f"entry {_entry_text(r, c)} is wrong (you wrote {show_entry(student[r, c])})."
-            )
-    return hints, codes
-
-
 def check_matrix(
     student: Any,
     expected: Any,
@@ -267,14 +212,17 @@ def check_matrix(
 
     Parameters
     ----------
-    student : str, nested lists, ndarray or sympy.Matrix, shape (r, c)
+    student : str, nested lists, ndarray, sympy.Matrix or None, shape (r, c)
         Text such as ``"[[cos(q1), -sin(q1), 0, 0], …]"`` is parsed by a whitelist
         parser (never evaluated); list entries may be numbers, sympy expressions or text.
         A vector may be given as a row or a column, and ``(x, y, z)`` for ``p_EE``.
-    expected : ExpectedMatrix, DerivationStep, sympy.Matrix or array-like, shape (r, c)
+        When a 1×1 matrix is expected, a plain number or formula (``"2*sin(q2)"``) will
+        do. ``None`` (an exercise not answered yet) fails with a hint saying so.
+    expected : ExpectedMatrix, DerivationStep, sympy.Matrix, array-like or scalar
         With context (``expected_matrix(robot, "M2")`` or ``derivation(...)["M2"]``) the
         hints name modules and recognise order, convention, offset and unit mistakes; a
-        bare matrix gets context-free hints only.
+        bare matrix gets context-free hints only (rotation wording only when it is a
+        rotation or a homogeneous transform). A scalar is a 1×1 matrix.
     tol : float
         An entry is right when ``|student − expected| ≤ tol·max(1, |expected|)`` at every
         sample point (numbers rounded to about 3 significant decimals pass).
@@ -312,6 +260,10 @@ def check_matrix(
     The sine terms of A2 (module M2, Ry with a = (0, 0, 20)) have the wrong sign, ...
     >>> check_matrix([[1, 0], [0, 1]], np.eye(2)).ok
     True
+    >>> check_matrix("1/2", 0.5).ok  # a 1×1 answer needs no brackets
+    True
+    >>> check_matrix(None, np.eye(2)).hints
+    ['No answer yet: replace None with your matrix.']
     """
     if isinstance(tol, bool) or not isinstance(tol, (int, float)) or not 0 <= tol < 1:
         raise InvalidInputError("tol", tol, "a number from 0 to 1 (relative tolerance)")
@@ -319,39 +271,24 @@ def check_matrix(
         raise InvalidInputError("samples", samples, "an integer ≥ 1")
     limits = limits or ParserLimits()
     reference = as_expected(expected)
+    if student is None:  # the exercise's placeholder: not answered yet
+        return MatrixCheck(False, [], [NO_ANSWER], ["no_answer"], None, reference, reveal)
     table = _symbol_table(reference, symbols)
-    matrix = _fit_shapes(_student_matrix(student, table, limits), reference.matrix)
     expected_m = reference.matrix
+    scalar = expected_m.shape == (1, 1)
+    matrix = _fit_shapes(_student_matrix(student, table, limits, scalar), expected_m)
     if matrix.shape != expected_m.shape:
-        hint = (
-            f"Expected a {expected_m.rows}×{expected_m.cols} matrix, you gave "
-            f"{matrix.rows}×{matrix.cols}."
-        )
-        if expected_m.shape == (4, 4) and matrix.shape == (3, 3):
-            hint += " That looks like the rotation part only: add the translation column and "
-            hint += "the bottom row (0, 0, 0, 1)."
-        return MatrixCheck(False, [], [hint], ["shape"], matrix, reference, reveal)
-    names = sorted(
-        {s.name for s in matrix.free_symbols | expected_m.free_symbols}
-        | set(reference.robot.coordinate_names if reference.robot is not None else ())
-    )
-    k = int(samples) if names else 1
-    env = sample_points(names, k, seed)
-    s_values = _values(matrix, env, k)
-    e_values = _values(expected_m, env, k)
-    close = _close(s_values, e_values, tol)
-    wrong = set()
-    for r in range(matrix.rows):
-        for c in range(matrix.cols):
-            if close[r, c]:
-                continue
-            undefined = np.isnan(s_values[:, r, c]).any() or np.isnan(e_values[:, r, c]).any()
-            if not _proven_equal(matrix[r, c], expected_m[r, c], full=bool(undefined)):
-                wrong.add((r, c))
+        transposed_wrong = None
+        if matrix.shape == expected_m.T.shape:  # only a non-square matrix gets here
+            transposed_wrong = _compare(matrix.T, reference, tol, samples, seed)[-1]
+        hint = shape_hint(matrix.shape, expected_m, transposed_wrong)
+        code = "shape" if transposed_wrong is None else "transposed_matrix"
+        return MatrixCheck(False, [], [hint], [code], matrix, reference, reveal)
+    env, k, s_values, e_values, wrong = _compare(matrix, reference, tol, samples, seed)
     if not wrong:
         return MatrixCheck(True, [], [], [], matrix, reference, reveal)
     candidates = context_candidates(reference, env, k) + generic_candidates(e_values)
-    full, partial = _explain(candidates, wrong, s_values, e_values, tol)
+    full, partial = explain(candidates, wrong, s_values, e_values, tol)
     hints: list[str] = []
     codes: list[str] = []
     for candidate in full[:3]:
@@ -361,16 +298,16 @@ def check_matrix(
     explained = set(wrong) if full else set()
     if not full:
         for candidate, entries in partial[:1]:  # the best one; more would be guesswork
-            hints.append(f"{candidate.message} (entries {_entries_text(entries)})")
+            hints.append(f"{candidate.message} (entries {entries_text(entries)})")
             codes.append(candidate.code)
             explained |= entries
-    more, more_codes = _entry_hints(
+    more, more_codes = entry_hints(
         wrong - explained, matrix, expected_m, s_values, e_values, tol, reveal
     )
     hints += more
     codes += more_codes
     if full:
-        hints.append(f"Wrong entries: {_entries_text(wrong)}.")
+        hints.append(f"Wrong entries: {entries_text(wrong)}.")
     return MatrixCheck(False, sorted(wrong), hints, codes, matrix, reference, reveal)
 
 
@@ -394,7 +331,8 @@ def assert_matrix(student: Any, expected: Any, **options: Any) -> MatrixCheck:
     Raises
     ------
     AssertionError
-        When it is wrong; the message lists the wrong entries and the hints.
+        When it is wrong or missing (``None``); the message lists the wrong entries and
+        the hints.
 
     Examples
     --------

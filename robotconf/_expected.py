@@ -130,8 +130,9 @@ def as_expected(reference: Any) -> ExpectedMatrix:
 
     Parameters
     ----------
-    reference : ExpectedMatrix, DerivationStep, sympy.Matrix or array-like, shape (r, c)
-        A derivation step keeps its context; a bare matrix has none.
+    reference : ExpectedMatrix, DerivationStep, sympy.Matrix, array-like or scalar
+        A derivation step keeps its context; a bare matrix has none; a number or a
+        sympy expression is a 1×1 matrix.
 
     Returns
     -------
@@ -158,6 +159,8 @@ def as_expected(reference: Any) -> ExpectedMatrix:
         )
     if isinstance(reference, sympy.MatrixBase):
         return ExpectedMatrix(sympy.Matrix(reference))
+    if isinstance(reference, sympy.Expr):  # a scalar: a 1×1 matrix
+        return ExpectedMatrix(sympy.Matrix([[reference]]))
     if isinstance(reference, (str, bytes)):
         raise InvalidInputError(
             "expected",
@@ -174,6 +177,8 @@ def as_expected(reference: Any) -> ExpectedMatrix:
             "a numeric matrix, a sympy Matrix or rc.expected_matrix(...)",
             problem="not a matrix:",
         ) from None
+    if array.ndim == 0:  # a scalar: a 1×1 matrix
+        array = array.reshape(1, 1)
     if array.ndim == 1:
         array = array[:, np.newaxis]
     if array.ndim != 2 or array.size == 0 or not np.all(np.isfinite(array)):

@@ -9,8 +9,10 @@ Context-aware candidates need the robot and the matrix name (an
 :class:`~robotconf._expected.ExpectedMatrix` from ``expected_matrix`` or a derivation
 step): wrong rotation direction of one module, offset after the rotation, a missing
 offset or end-effector point, the other DH convention, degrees read as radians (and the
-reverse), multiplication in the wrong order. Context-free candidates work on any matrix:
-transposed rotation part, transposed matrix, two rows or two columns swapped.
+reverse), multiplication in the wrong order, and for a DH row the twist α with the wrong
+sign or d and a swapped. Context-free candidates work on any matrix: transposed matrix,
+two rows or two columns swapped, and, when the expected matrix is a rotation or a
+homogeneous transform (see :func:`is_rotation_like`), a transposed rotation part.
 """
 
 from __future__ import annotations
@@ -26,7 +28,13 @@ from ._dh import DHLink
 from ._expected import ExpectedMatrix
 from ._module import Module
 
-__all__ = ["Candidate", "context_candidates", "generic_candidates", "ROTATION_PATTERN"]
+__all__ = [
+    "Candidate",
+    "context_candidates",
+    "generic_candidates",
+    "is_rotation_like",
+    "ROTATION_PATTERN",
+]
 
 #: Where the sines sit in an elementary rotation (1-based entries), for the hints.
 ROTATION_PATTERN = {
@@ -36,6 +44,12 @@ ROTATION_PATTERN = {
 }
 _STANDARD = "Rz(θ)·Tz(d)·Tx(a)·Rx(α)"
 _MODIFIED = "Rx(α)·Tx(a)·Rz(θ)·Tz(d)"
+#: Link mistakes reported under a shared code.
+_MISTAKE_CODES = {
+    "missing_d": "missing_offset",
+    "missing_a": "missing_offset",
+    "alpha_sign": "sign_error",
+}
 
 
 @dataclass(frozen=True)
@@ -87,6 +101,8 @@ def _link_mistakes(link: Any) -> list[str]:
         found = ["rotation_direction"] if link.joint == "R" else []
         found += ["missing_d"] if link.d != 0 else []
         found += ["missing_a"] if link.a != 0 else []
+        found += ["alpha_sign"] if link.alpha != 0 else []
+        found += ["swapped_d_a"] if link.joint == "R" and link.d != link.a else []
         return found
     return []
 
@@ -122,6 +138,10 @@ def _link_matrix(
         changes["d"] = 0.0
     if mistake == "missing_a":
         changes["a"] = 0.0
+    if mistake == "alpha_sign":
+        changes["alpha"] = -changes.get("alpha", link.alpha)
+    if mistake == "swapped_d_a":
+        changes["d"], changes["a"] = link.a, link.d
     if mistake == "convention":
         changes["convention"] = "modified" if link.convention == "standard" else "standard"
     return dataclasses.replace(link, **changes).matrix(q) if changes else link.matrix(q)
@@ -153,6 +173,17 @@ def _mistake_message(code: str, j: int, link: Any) -> str:
         )
     if code == "missing_d":
         return f"The link offset d of {label} is missing: Tz(d) moves along z by d."
+    if code == "alpha_sign":
+        return (
+            f"The twist α of {label} has the wrong sign: α is the angle from the old z axis "
+            "to the new one, measured about x by the right-hand rule, and Rx(α) has −sin α "
+            "in entry (2,3) and +sin α in entry (3,2)."
+        )
+    if code == "swapped_d_a":
+        return (
+            f"The link offset d and the link length a of {label} are swapped: d is the "
+            "distance along z (Tz(d)), a the distance along x (Tx(a))."
+        )
     return f"The link length a of {label} is missing: Tx(a) moves along x by a."
 
 
@@ -270,7 +301,7 @@ def context_candidates(
         link = robot.modules[j]
         for mistake in _link_mistakes(link):
             message = _mistake_message(mistake, j + 1, link)
-            code = "missing_offset" if mistake in ("missing_d", "missing_a") else mistake
+            code = _MISTAKE_CODES.get(mistake, mistake)
             candidates.append(Candidate(code, message, context.value({j: mistake})))
     dh_links = [j for j in range(first - 1, last) if isinstance(robot.modules[j], DHLink)]
     if dh_links:
@@ -315,6 +346,37 @@ def context_candidates(
     return candidates
 
 
+def is_rotation_like(values: np.ndarray, tol: float = 1e-3) -> bool:
+    """Whether a matrix is a rotation (3×3) or a homogeneous transform (4×4).
+
+    Parameters
+    ----------
+    values : ndarray, shape (K, rows, cols)
+        The matrix at the K sample points.
+    tol : float
+        Absolute tolerance of ``RᵀR = I`` (and of the bottom row ``(0, 0, 0, 1)``).
+
+    Returns
+    -------
+    bool
+        True when the top-left 3×3 block is orthonormal at every point and, for a 4×4
+        matrix, the bottom row is ``(0, 0, 0, 1)``.
+
+    Examples
+    --------
+    >>> is_rotation_like(np.eye(4)[np.newaxis]), is_rotation_like(np.ones((1, 3, 3)))
+    (True, False)
+    """
+    shape = values.shape[1:]
+    if shape not in ((3, 3), (4, 4)) or not np.all(np.isfinite(values)):
+        return False
+    block = values[:, :3, :3]
+    gram = np.swapaxes(block, 1, 2) @ block
+    if not np.allclose(gram, np.eye(3), atol=tol, rtol=0.0):
+        return False
+    return shape == (3, 3) or bool(np.allclose(values[:, 3, :], [0, 0, 0, 1], atol=tol, rtol=0.0))
+
+
 def generic_candidates(values: np.ndarray) -> list[Candidate]:
     """Wrong answers that any matrix allows: transposes and swapped rows or columns.
 
@@ -326,10 +388,14 @@ def generic_candidates(values: np.ndarray) -> list[Candidate]:
     Returns
     -------
     list of Candidate
+        A transposed rotation part only for a rotation or homogeneous transform (its
+        wording speaks of frame axes), a transposed matrix only for a square one (a
+        non-square one has another shape when transposed: see the checker's shape hint).
     """
     _, rows, cols = values.shape
     candidates = []
-    if rows >= 3 and cols >= 3:
+    rotation = is_rotation_like(values)
+    if rotation:
         wrong = values.copy()
         wrong[:, :3, :3] = np.swapaxes(values[:, :3, :3], 1, 2)
         message = (
@@ -338,16 +404,19 @@ def generic_candidates(values: np.ndarray) -> list[Candidate]:
             "axes as columns, not as rows."
         )
         candidates.append(Candidate("transposed_rotation", message, wrong))
-    transposed = np.swapaxes(values, 1, 2)
-    same_as_rotation = bool(candidates) and np.allclose(candidates[0].values, transposed)
-    if rows == cols and rows >= 2 and not same_as_rotation:
-        message = "The whole matrix is transposed: write each row as a row, not as a column."
-        if rows == 4:
+    if rows == cols and rows >= 2:
+        transposed = np.swapaxes(values, 1, 2)
+        if not (candidates and np.allclose(candidates[0].values, transposed)):
             message = (
-                "The whole matrix is transposed: the translation belongs in the last column "
-                "and the row (0, 0, 0, 1) at the bottom."
+                "The whole matrix is transposed (yours is the transpose of the expected "
+                "one): write each row as a row, not as a column."
             )
-        candidates.append(Candidate("transposed_matrix", message, transposed))
+            if rotation and rows == 4:
+                message = (
+                    "The whole matrix is transposed: the translation belongs in the last "
+                    "column and the row (0, 0, 0, 1) at the bottom."
+                )
+            candidates.append(Candidate("transposed_matrix", message, transposed))
     for axis, word in ((1, "Rows"), (2, "Columns")):
         size = values.shape[axis]
         for a in range(size):

@@ -175,13 +175,9 @@ def test_degrees_in_the_twist_are_recognised():
     assert result.mistakes == ["degrees_as_radians"], result.hints
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="core checker gap: d and a swapped in a DH row gets only entry-by-entry hints",
-)
 def test_d_and_a_swapped_is_named():
     expected = rc.expected_matrix(_one_link(np.pi / 2, d=0.5, a=1.0), "A1")
     wrong = rc.expected_matrix(_one_link(np.pi / 2, d=1.0, a=0.5), "A1").matrix
     result = rc.check_matrix(wrong, expected)
     assert not result.ok
-    assert result.mistakes, result.hints  # today: [] — no named mistake
+    assert "swapped_d_a" in result.mistakes, result.hints
