@@ -66,3 +66,17 @@ def red_centroid(image: np.ndarray) -> tuple[int, np.ndarray]:
     if len(xs) == 0:
         return 0, np.array([np.nan, np.nan])
     return len(xs), np.array([xs.mean(), ys.mean()])
+
+
+def red_moved(page, canvas, start: np.ndarray, *, at_least: float = 5.0, timeout: float = 15.0):  # type: ignore[no-untyped-def]
+    """Poll until the red end-effector's centroid moved ``at_least`` pixels from ``start``.
+
+    Returns (count, centroid) of the last picture; the caller asserts on them.
+    """
+    count, centroid = red_centroid(pixels(canvas))
+    for _ in range(int(timeout / 0.25)):
+        if count > 40 and np.linalg.norm(centroid - start) > at_least:
+            break
+        page.wait_for_timeout(250)
+        count, centroid = red_centroid(pixels(canvas))
+    return count, centroid

@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from .conftest import Lab, copy_notebook
-from .lab_driver import open_notebook, pixels, red_centroid, run_cell
+from .lab_driver import open_notebook, pixels, red_centroid, red_moved, run_cell
 
 NOTEBOOK = Path(__file__).parents[2] / "notebooks" / "configurator.ipynb"
 
@@ -21,11 +21,6 @@ def _ee(page) -> np.ndarray:  # type: ignore[no-untyped-def]
     return np.array([float(v) for v in numbers.group(1).split(",")])
 
 
-def _settle(page, canvas):  # type: ignore[no-untyped-def]
-    page.wait_for_timeout(1200)
-    return red_centroid(pixels(canvas))
-
-
 def test_configurator_widgets_drive_the_robot(lab: Lab, page) -> None:  # type: ignore[no-untyped-def]
     name = copy_notebook(NOTEBOOK, lab)
     open_notebook(page, lab.url(name))
@@ -33,7 +28,8 @@ def test_configurator_widgets_drive_the_robot(lab: Lab, page) -> None:  # type: 
     page.wait_for_selector("[data-robotconf-scene='ready']", timeout=60_000)
     canvas = page.locator("[data-robotconf-scene] canvas").first
     np.testing.assert_allclose(_ee(page), [70, 0, 20])  # the paper's parking position
-    count, start = _settle(page, canvas)
+    page.wait_for_timeout(1200)
+    count, start = red_centroid(pixels(canvas))
     assert count > 40, "no red end-effector in the 3D pane"
 
     # Move q2 with the keyboard on its slider (module 2's row).
@@ -45,7 +41,7 @@ def test_configurator_widgets_drive_the_robot(lab: Lab, page) -> None:  # type: 
     moved = _ee(page)
     assert np.linalg.norm(moved - [70, 0, 20]) > 1, moved
     assert abs(moved[1]) < 1e-9  # Ry keeps the arm in the xz plane
-    count, after_slider = _settle(page, canvas)
+    count, after_slider = red_moved(page, canvas, start)
     assert count > 40 and np.linalg.norm(after_slider - start) > 5
 
     # Module 2 becomes a rotation about x: the 30 + 40 arm lies along x, so turning it
@@ -53,7 +49,7 @@ def test_configurator_widgets_drive_the_robot(lab: Lab, page) -> None:  # type: 
     page.locator(".robotconf-module-kind select").nth(1).select_option(label="1 Rx")
     page.wait_for_timeout(500)
     np.testing.assert_allclose(_ee(page), [70, 0, 20], atol=1e-3)
-    count, after_type = _settle(page, canvas)
+    count, after_type = red_moved(page, canvas, after_slider)
     assert count > 40 and np.linalg.norm(after_type - after_slider) > 5
 
     # Module 3 about z instead: now y changes.

@@ -5,7 +5,15 @@ from __future__ import annotations
 import numpy as np
 
 from .conftest import Lab
-from .lab_driver import open_notebook, pixels, red_centroid, run_cell, wait_idle, write_notebook
+from .lab_driver import (
+    open_notebook,
+    pixels,
+    red_centroid,
+    red_moved,
+    run_cell,
+    wait_idle,
+    write_notebook,
+)
 
 CELLS = [
     "import robotconf as rc\nrobot = rc.preset('paper')\nscene = rc.view(robot, height=480)",
@@ -32,8 +40,7 @@ def test_scene_renders_moves_and_exports(lab: Lab, page) -> None:  # type: ignor
 
     run_cell(page, 1)
     wait_idle(page)
-    page.wait_for_timeout(1500)
-    count_after, end = red_centroid(pixels(canvas))
+    count_after, end = red_moved(page, canvas, start, at_least=15)
     assert count_after > 40
     assert np.linalg.norm(end - start) > 15, "scene.update did not move the end-effector"
 
