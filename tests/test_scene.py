@@ -262,3 +262,24 @@ def test_pack_ops_indexes_buffers() -> None:
     a = transforms_op(["/a"], np.eye(4)[None])
     contents, buffers = pack_ops([a, a])
     assert [c["buffers"] for c in contents] == [[0], [1]] and len(buffers) == 2
+
+
+def test_view_shows_one_pane_per_cell_in_a_kernel(tmp_path) -> None:  # type: ignore[no-untyped-def]
+    import nbclient
+    import nbformat
+
+    notebook = nbformat.v4.new_notebook()
+    notebook.cells = [
+        nbformat.v4.new_code_cell(source)
+        for source in (
+            "import robotconf as rc\nrc.view(rc.preset('paper'))",  # last line: no double
+            "scene = rc.view(rc.preset('paper'))",
+            "scene",  # a second view of the same scene, on purpose
+        )
+    ]
+    nbclient.NotebookClient(notebook, kernel_name="python3", timeout=120).execute(cwd=str(tmp_path))
+    views = [
+        sum("application/vnd.jupyter.widget-view+json" in o.get("data", {}) for o in cell.outputs)
+        for cell in notebook.cells
+    ]
+    assert views == [1, 1, 1]

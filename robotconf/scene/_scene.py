@@ -100,6 +100,7 @@ class Scene:
         self._frames_on = bool(frames)
         self._shown_labels: list[str] = []
         self._drawing: RobotDrawing | None = None
+        self._shown_in_cell: int | None = None
         self.robot = robot
         self.q = robot.q
         self._send(self._setup_ops())
@@ -243,6 +244,11 @@ class Scene:
     def _ipython_display_(self) -> None:
         from IPython.display import display
 
+        # `rc.view(robot)` as a cell's last line displays the pane, then IPython displays
+        # the returned scene again: skip that second one (same cell), allow any later one.
+        if self._shown_in_cell is not None and self._shown_in_cell == _execution_count():
+            self._shown_in_cell = None
+            return
         display(self._widget if self._widget is not None else repr(self))
 
     def __repr__(self) -> str:
@@ -347,4 +353,17 @@ def view(robot: Robot, q: Any = None, *, display: bool = True, **options: Any) -
         from IPython.display import display as show
 
         show(scene)
+        scene._shown_in_cell = _execution_count()
     return scene
+
+
+def _execution_count() -> int | None:
+    """The running cell's number in IPython, or None outside it."""
+    import sys
+
+    if "IPython" not in sys.modules:
+        return None
+    from IPython import get_ipython
+
+    shell = get_ipython()
+    return None if shell is None else int(shell.execution_count)
