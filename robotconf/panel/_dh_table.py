@@ -14,6 +14,7 @@ from .._validation import check_finite_number
 from ._errors_display import ErrorLabel
 from ._number_control import NumberControl
 from ._ranges import q_range
+from ._row_list import ChangeCallback, RowList
 
 __all__ = ["DHTable", "DHRow"]
 
@@ -155,7 +156,7 @@ class DHRow:
         self._on_change("link")
 
 
-class DHTable:
+class DHTable(RowList):
     """DH-table mode: rows, add button and the standard/modified selector.
 
     Examples
@@ -168,11 +169,8 @@ class DHTable:
     {'modified'}
     """
 
-    def __init__(self, on_change: Callable[[str, list[int | None] | None], None]):
-        self._on_change = on_change
-        self.rows: list[DHRow] = []
-        self._scale = 1.0
-        self.degrees = True
+    def __init__(self, on_change: ChangeCallback):
+        super().__init__(on_change, widgets.Button(description="add row", icon="plus"))
         self.convention = widgets.ToggleButtons(
             options=DH_CONVENTIONS,
             value="standard",
@@ -182,10 +180,6 @@ class DHTable:
         )
         self.convention_note = widgets.HTML()
         self.convention.observe(self._convention_changed, "value")
-        self.add_button = widgets.Button(description="add row", icon="plus")
-        self.add_button.on_click(lambda _: self.add())
-        self.error = ErrorLabel()
-        self._rows_box = widgets.VBox()
         self.widget = widgets.VBox(
             [
                 self.convention,
@@ -214,23 +208,12 @@ class DHTable:
 
         ``limits`` is an (n, 2) array of joint limits in core units, or ``None``.
         """
-        self._scale = scale
-        if degrees is not None:
-            self.degrees = degrees
         if links:
             self.convention.unobserve(self._convention_changed, "value")
             self.convention.value = links[0].convention
             self.convention.observe(self._convention_changed, "value")
             self._show_note()
-        self.rows = [
-            self._row(link, None if limits is None else limits[i]) for i, link in enumerate(links)
-        ]
-        self._refresh()
-
-    def _refresh(self) -> None:
-        for i, row in enumerate(self.rows):
-            row.set_title(i, len(self.rows))
-        self._rows_box.children = tuple(row.widget for row in self.rows)
+        self._load_rows(links, scale, degrees, limits)
 
     def links(self) -> list[DHLink] | None:
         """The rows as DH links in the selected convention, or ``None`` if one is invalid."""
@@ -251,37 +234,12 @@ class DHTable:
             for field, control in row.controls():
                 yield f"dh[{i}].{field}", control.error
 
-    def set_degrees(self, degrees: bool) -> None:
-        """Show angles in degrees or radians."""
-        self.degrees = degrees
-        for row in self.rows:
-            row.set_degrees(degrees)
+    def _new_link(self) -> DHLink:
+        # Revolute, with a = a tenth of the slider range so the new link is visible.
+        return DHLink(a=self._scale / 10.0, convention=self.convention.value)
 
-    def add(self, link: DHLink | None = None) -> None:
-        """Append a row (default: revolute, a = a tenth of the slider range)."""
-        order: list[int | None] = [*range(len(self.rows)), None]
-        new = link or DHLink(a=self._scale / 10.0, convention=self.convention.value)
-        self.rows.append(self._row(new))
-        self._refresh()
-        self._on_change("structure", order)
-
-    def _action(self, row: DHRow, action: str) -> None:
-        i = self.rows.index(row)
-        order: list[int | None] = list(range(len(self.rows)))
-        if action == "remove":
-            if len(self.rows) == 1:
-                self.error.show(_empty_table_message())
-                return
-            del self.rows[i]
-            del order[i]
-        else:
-            j = i - 1 if action == "up" else i + 1
-            if not 0 <= j < len(self.rows):
-                return
-            self.rows[i], self.rows[j] = self.rows[j], self.rows[i]
-            order[i], order[j] = order[j], order[i]
-        self._refresh()
-        self._on_change("structure", order)
+    def _last_row_message(self) -> str:
+        return _empty_table_message()
 
     def _row_changed(self, reason: str) -> None:
         self._on_change(reason, None)

@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Iterator, Sequence
 from typing import Any
 
 import ipywidgets as widgets
@@ -13,15 +13,12 @@ from .._module import Module
 from .._robot import Robot
 from ._errors_display import ErrorLabel
 from ._module_row import ModuleRow
+from ._row_list import ChangeCallback, RowList
 
 __all__ = ["ModuleList"]
 
-#: Called with a reason (``"q"``, ``"link"`` or ``"structure"``) and, for structure
-#: changes, the old index of each new row (``None`` for a new row).
-ChangeCallback = Callable[[str, "list[int | None] | None"], None]
 
-
-class ModuleList:
+class ModuleList(RowList):
     """Editable list of module rows (the paper's Figure 7/8 block dialog, as a list).
 
     Parameters
@@ -40,25 +37,27 @@ class ModuleList:
     """
 
     def __init__(self, on_change: ChangeCallback):
-        self._on_change = on_change
-        self.rows: list[ModuleRow] = []
-        self._scale = 1.0
-        self.degrees = True
-        self._limits: Any = None
-        self.add_button = widgets.Button(
+        button = widgets.Button(
             description="add module", icon="plus", tooltip="append a module at the tool end"
         )
-        self.add_button.on_click(lambda _: self.add())
-        self.error = ErrorLabel()
-        self._rows_box = widgets.VBox()
+        super().__init__(on_change, button)
         self.widget = widgets.VBox(
             [self._rows_box, widgets.HBox([self.add_button, self.error.widget])]
         )
 
-    # -- building -----------------------------------------------------------------------
-
     def _row(self, link: Link, limits: Any = None) -> ModuleRow:
         return ModuleRow(link, self._scale, self.degrees, limits, self._row_changed, self._action)
+
+    def _new_link(self) -> Module:
+        return Module("Rz")  # a rotation about z at the tool end
+
+    def _last_row_message(self) -> str:
+        # The core's own rule and message: a robot keeps at least one module.
+        try:
+            Robot([Module("none")]).with_removed(0)
+        except InvalidInputError as error:
+            return str(error)
+        return "a robot keeps at least one module"  # pragma: no cover - the core refuses
 
     def load(
         self,
@@ -71,18 +70,7 @@ class ModuleList:
 
         ``limits`` is an (n, 2) array of joint limits in core units, or ``None``.
         """
-        self._scale = scale
-        if degrees is not None:
-            self.degrees = degrees
-        self.rows = [
-            self._row(link, None if limits is None else limits[i]) for i, link in enumerate(links)
-        ]
-        self._refresh()
-
-    def _refresh(self) -> None:
-        for i, row in enumerate(self.rows):
-            row.set_title(i, len(self.rows))
-        self._rows_box.children = tuple(row.widget for row in self.rows)
+        self._load_rows(links, scale, degrees, limits)
 
     def links(self) -> list[Link] | None:
         """The links of all rows, or ``None`` if any row is invalid (its message shown)."""
@@ -96,45 +84,6 @@ class ModuleList:
         yield "modules", self.error
         for i, row in enumerate(self.rows):
             yield from row.error_items(f"modules[{i}]")
-
-    def set_degrees(self, degrees: bool) -> None:
-        """Show angle coordinates in degrees or radians (no change to the robot)."""
-        self.degrees = degrees
-        for row in self.rows:
-            row.set_degrees(degrees)
-
-    # -- user actions -------------------------------------------------------------------
-
-    def add(self, module: Module | None = None) -> None:
-        """Append a module (default: a rotation about z) at the tool end."""
-        order: list[int | None] = [*range(len(self.rows)), None]
-        self.rows.append(self._row(module or Module("Rz")))
-        self.error.clear()
-        self._refresh()
-        self._on_change("structure", order)
-
-    def _action(self, row: ModuleRow, action: str) -> None:
-        i = self.rows.index(row)
-        order: list[int | None] = list(range(len(self.rows)))
-        if action == "remove":
-            if len(self.rows) == 1:
-                # The core's own rule and message: a robot keeps at least one module.
-                try:
-                    Robot([Module("none")]).with_removed(0)
-                except InvalidInputError as error:
-                    self.error.show(str(error))
-                return
-            del self.rows[i]
-            del order[i]
-        else:
-            j = i - 1 if action == "up" else i + 1
-            if not 0 <= j < len(self.rows):
-                return
-            self.rows[i], self.rows[j] = self.rows[j], self.rows[i]
-            order[i], order[j] = order[j], order[i]
-        self.error.clear()
-        self._refresh()
-        self._on_change("structure", order)
 
     def _row_changed(self, row: ModuleRow, reason: str) -> None:
         self._on_change(reason, None)
