@@ -12,7 +12,7 @@ import time
 import numpy as np
 
 from robotconf import Module, Robot
-from robotconf._derivation import derivation
+from robotconf.teaching import derivation
 
 TARGET_SECONDS = 2.0
 

@@ -15,8 +15,7 @@ import time
 import numpy as np
 
 import robotconf as rc
-from robotconf._dva import analytic_dva
-from robotconf._simulation import simulate
+from robotconf.motion import analytic_dva, simulate
 from robotconf.signals import RepeatingSequence, Sine
 
 TARGET_MS = 50.0

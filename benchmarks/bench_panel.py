@@ -19,8 +19,7 @@ from collections.abc import Callable
 import numpy as np
 
 import robotconf as rc
-from robotconf.panel import Configurator
-from robotconf.panel._scene_slot import default_scene_factory
+from robotconf.panel import Configurator, default_scene_factory
 
 TARGET_P95_MS = 20.0
 SAMPLES = 400

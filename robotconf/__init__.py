@@ -1,7 +1,12 @@
 """robotconf: serial-robot kinematics for teaching, from modules or Denavit–Hartenberg rows.
 
-The core (this package's top level) needs only numpy; tables, plots, symbolic algebra and
-the 3D view import their libraries when they are used.
+``import robotconf as rc`` gives the names a notebook needs, grouped by concept below. Each
+lives in a folder of its own (docs/architecture.md): :mod:`robotconf.kinematics`,
+:mod:`robotconf.signals`, :mod:`robotconf.motion`, :mod:`robotconf.teaching`,
+:mod:`robotconf.io`, :mod:`robotconf.presets`, :mod:`robotconf.plots`, and the
+presentation layers :mod:`robotconf.scene` and :mod:`robotconf.panel`. Importing the
+package loads numpy only; tables, plots, symbolic algebra, the 3D view and the panel
+import their libraries when they are used.
 
 >>> import robotconf as rc
 >>> robot = rc.Robot(
@@ -15,91 +20,126 @@ array([70.,  0., 20.])
 from typing import Any
 
 from . import presets, signals
-from ._check_result import MatrixCheck
-from ._checking import assert_matrix, check_matrix
-from ._derivation import Derivation, DerivationStep, derivation
-from ._dh import DH_CONVENTIONS, DHLink, dh_matrix
-from ._dh_conversion import dh_to_modules, modules_to_dh
 from ._errors import InvalidInputError
-from ._expected import ExpectedMatrix, expected_matrix
-from ._files import Setup, load, load_setup
-from ._geometry import LinkGeometry
-from ._jacobian import jacobian
-from ._joint_axes import JointAxes, joint_axes
-from ._limits import characteristic_length
-from ._link import JOINT_TYPES, Link
-from ._module import MODULE_KINDS, Module, kind_name, transfer_matrix
-from ._motion_table import compare_motions
-from ._robot import Robot
-from ._robot_plot import plot_robot
-from ._robot_points import RobotPoint, format_point, robot_points
-from ._simulation import Motion, simulate
-from ._student_parser import ParserLimits, parse_expression, parse_matrix
-from ._symbolic import SymbolicChain, symbolic_chain
-from ._urdf import to_urdf
 from ._validation import check_finite_number, check_joint_values, check_vector3
-from ._workspace import Workspace, workspace
+from .io import Setup, load, load_setup, to_urdf
+from .kinematics import (
+    DH_CONVENTIONS,
+    JOINT_TYPES,
+    MODULE_KINDS,
+    DHLink,
+    JointAxes,
+    Link,
+    LinkGeometry,
+    Module,
+    Robot,
+    RobotPoint,
+    Workspace,
+    characteristic_length,
+    dh_matrix,
+    dh_to_modules,
+    format_point,
+    jacobian,
+    joint_axes,
+    kind_name,
+    modules_to_dh,
+    robot_points,
+    transfer_matrix,
+    workspace,
+)
+from .motion import Motion, compare_motions, simulate
+from .plots import plot_coordinates, plot_motion, plot_robot, plot_workspace
 from .presets import preset, preset_names
+from .teaching import (
+    Derivation,
+    DerivationStep,
+    ExpectedMatrix,
+    MatrixCheck,
+    ParserLimits,
+    SymbolicChain,
+    assert_matrix,
+    check_matrix,
+    derivation,
+    expected_matrix,
+    parse_expression,
+    parse_matrix,
+    symbolic_chain,
+)
 
 __version__ = "0.1.0"
 
+# What a notebook needs; the rest (validators, kernel descriptions, parser pieces) stays
+# reachable as rc.NAME and from its folder.
 __all__ = [
-    "DH_CONVENTIONS",
-    "JOINT_TYPES",
-    "MODULE_KINDS",
-    "assert_matrix",
-    "characteristic_length",
-    "check_finite_number",
-    "check_joint_values",
-    "check_matrix",
-    "check_vector3",
-    "compare_motions",
-    "configurator",
-    "Configurator",
-    "derivation",
-    "Derivation",
-    "DerivationStep",
-    "dh_matrix",
-    "dh_to_modules",
+    # robots
+    "Robot",
+    "Module",
     "DHLink",
-    "expected_matrix",
-    "ExpectedMatrix",
+    "MODULE_KINDS",
+    "DH_CONVENTIONS",
+    "transfer_matrix",
+    "dh_matrix",
     "InvalidInputError",
+    # kinematics
+    "robot_points",
     "jacobian",
     "joint_axes",
-    "JointAxes",
-    "format_point",
-    "kind_name",
+    "dh_to_modules",
+    "modules_to_dh",
+    "workspace",
+    "Workspace",
+    # motion
+    "signals",
+    "simulate",
+    "Motion",
+    "compare_motions",
+    # teaching
+    "derivation",
+    "symbolic_chain",
+    "expected_matrix",
+    "check_matrix",
+    "assert_matrix",
+    "MatrixCheck",
+    # files and presets
     "load",
     "load_setup",
-    "Link",
-    "LinkGeometry",
-    "MatrixCheck",
-    "modules_to_dh",
-    "Module",
-    "Motion",
-    "parse_expression",
-    "parse_matrix",
-    "ParserLimits",
+    "Setup",
+    "to_urdf",
     "preset",
     "preset_names",
     "presets",
+    # pictures
     "plot_robot",
-    "Robot",
-    "robot_points",
-    "RobotPoint",
-    "Scene",
-    "Setup",
-    "signals",
-    "simulate",
-    "symbolic_chain",
-    "SymbolicChain",
-    "to_urdf",
-    "transfer_matrix",
+    "plot_motion",
+    "plot_coordinates",
+    "plot_workspace",
     "view",
-    "workspace",
-    "Workspace",
+    "Scene",
+    "configurator",
+    "Configurator",
 ]
+
+# Kept importable under their old top-level names; not part of the notebook surface.
+_ALSO_PUBLIC = (
+    check_finite_number,
+    check_joint_values,
+    check_vector3,
+    characteristic_length,
+    format_point,
+    kind_name,
+    JOINT_TYPES,
+    JointAxes,
+    Link,
+    LinkGeometry,
+    RobotPoint,
+    Derivation,
+    DerivationStep,
+    ExpectedMatrix,
+    ParserLimits,
+    SymbolicChain,
+    parse_expression,
+    parse_matrix,
+)
 
 # Presentation layers import ipywidgets (and more) on first use, never at `import robotconf`.
 _LAZY = {
@@ -116,3 +156,7 @@ def __getattr__(name: str) -> Any:
 
         return getattr(importlib.import_module(f".{_LAZY[name]}", __name__), name)
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+def __dir__() -> list[str]:
+    return sorted(set(globals()) | set(_LAZY))

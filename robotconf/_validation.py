@@ -9,9 +9,32 @@ import numpy as np
 
 from ._errors import InvalidInputError
 
-__all__ = ["as_float_array", "check_finite_number", "check_vector3", "check_joint_values"]
+__all__ = [
+    "Rejected",
+    "as_float_array",
+    "check_finite_number",
+    "check_integer",
+    "check_flag",
+    "check_vector3",
+    "check_joint_values",
+    "check_configuration",
+]
 
 _FINITE = "a finite real number"
+
+
+class Rejected:
+    """Stands in for a JSON number robotconf refuses (NaN, ±Infinity, overflow, huge ints)
+    until a reader reaches it and can name its path (the file reader parses JSON so)."""
+
+    __slots__ = ("text", "reason")
+
+    def __init__(self, text: str, reason: str):
+        self.text = text
+        self.reason = reason
+
+    def __repr__(self) -> str:
+        return self.text
 
 
 def as_float_array(value: Any, field: str, allowed: str, what: str = "a number") -> np.ndarray:
@@ -68,6 +91,74 @@ def check_finite_number(value: Any, field: str) -> float:
     if not np.isfinite(number):
         raise InvalidInputError(field, number, _FINITE, problem="must be finite, got")
     return number
+
+
+def check_integer(
+    value: Any, field: str, lo: int | None = None, hi: int | None = None, what: str | None = None
+) -> int:
+    """Return ``value`` as a Python int within ``lo … hi`` (either bound may be open).
+
+    Parameters
+    ----------
+    value : int
+        A Python or numpy integer; booleans, floats (even ``3.0``) and text are refused.
+    field : str
+        Name used in the error message.
+    lo, hi : int, optional
+        Inclusive bounds.
+    what : str, optional
+        What is allowed, for the message; default: the bounds in words.
+
+    Returns
+    -------
+    int
+
+    Raises
+    ------
+    InvalidInputError
+        If ``value`` is not an integer or lies outside the bounds.
+
+    Examples
+    --------
+    >>> check_integer(3, "samples", 1)
+    3
+    >>> check_integer(0, "active", 1, 3)
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: active: out of range: 0; allowed: an integer from 1 to 3
+    """
+    if what is None:
+        if lo is not None and hi is not None:
+            what = f"an integer from {lo} to {hi}"
+        elif lo is not None:
+            what = f"an integer ≥ {lo}"
+        elif hi is not None:
+            what = f"an integer ≤ {hi}"
+        else:
+            what = "an integer"
+    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
+        raise InvalidInputError(field, value, what, problem="not an integer:")
+    number = int(value)
+    if (lo is not None and number < lo) or (hi is not None and number > hi):
+        raise InvalidInputError(field, number, what, problem="out of range:")
+    return number
+
+
+def check_flag(value: Any, field: str) -> bool:
+    """Return ``value`` if it is ``True`` or ``False`` (numpy booleans too).
+
+    Numbers and text are refused, so ``"no"`` never counts as true.
+
+    >>> check_flag(True, "labels")
+    True
+    >>> check_flag("no", "labels")
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: labels: not True or False: 'no'; allowed: True or False
+    """
+    if not isinstance(value, (bool, np.bool_)):
+        raise InvalidInputError(field, value, "True or False", problem="not True or False:")
+    return bool(value)
 
 
 def check_vector3(value: Any, field: str) -> tuple[float, float, float]:
@@ -171,3 +262,48 @@ def check_joint_values(
         )
     batched = array.ndim == 2
     return (array if batched else array[np.newaxis, :]), batched
+
+
+def check_configuration(
+    q: Any, n: int, names: Sequence[str] | None = None, field: str = "q"
+) -> np.ndarray:
+    """Validate one configuration of an ``n``-module robot (not a trajectory).
+
+    Parameters
+    ----------
+    q : array-like, shape (n,)
+        Radians for rotations, length units for translations.
+    n : int
+        Number of modules.
+    names : sequence of str, optional
+        Coordinate names, to say which entry is bad.
+    field : str
+        Name used in the error message.
+
+    Returns
+    -------
+    ndarray, shape (n,)
+
+    Raises
+    ------
+    InvalidInputError
+        As :func:`check_joint_values`, and for a trajectory of shape (T, n).
+
+    Examples
+    --------
+    >>> check_configuration([0, 1], 2)
+    array([0., 1.])
+    >>> check_configuration([[0, 1], [1, 2]], 2)
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: q: got a trajectory of shape (2, 2): ...; allowed: one ...
+    """
+    values, batched = check_joint_values(q, n, names, field)
+    if batched:
+        raise InvalidInputError(
+            field,
+            q,
+            f"one configuration of shape ({n},)",
+            problem=f"got a trajectory of shape {values.shape}:",
+        )
+    return values[0]

@@ -7,10 +7,19 @@ import pytest
 import sympy
 
 from robotconf import Module, Robot
-from robotconf._checking import MatrixCheck, assert_matrix, check_matrix
-from robotconf._derivation import derivation
-from robotconf._expected import ExpectedMatrix, as_expected, evaluate, expected_matrix
-from robotconf._symbolic import dh_factors, elementary_matrix, module_matrix
+from robotconf.teaching import (
+    ExpectedMatrix,
+    MatrixCheck,
+    as_expected,
+    assert_matrix,
+    check_matrix,
+    derivation,
+    dh_factors,
+    elementary_matrix,
+    evaluate,
+    expected_matrix,
+    module_matrix,
+)
 
 q1, q2, q3, l1, l2, l3 = sympy.symbols("q1 q2 q3 l1 l2 l3", real=True)
 A1 = module_matrix("Rz", q1, (0, 0, 0))

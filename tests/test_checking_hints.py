@@ -7,9 +7,8 @@ import pytest
 import sympy
 
 import robotconf as rc
-from robotconf._checking import assert_matrix, check_matrix
 from robotconf._errors import InvalidInputError
-from robotconf._mistakes import generic_candidates, is_rotation_like
+from robotconf.teaching import assert_matrix, check_matrix, generic_candidates, is_rotation_like
 
 q1, q2, q3 = sympy.symbols("q1 q2 q3", real=True)
 ROTATION_WORDS = ("rotation", "axis", "axes")
@@ -225,7 +224,7 @@ def test_hint_helpers_stay_numpy_only_and_never_evaluate_text():
     import subprocess
     import sys
 
-    source = (pathlib.Path(rc.__file__).parent / "_check_hints.py").read_text()
+    source = (pathlib.Path(rc.__file__).parent / "teaching" / "_hints.py").read_text()
     assert not re.search(r"\b(eval|exec|sympify|parse_expr)\(", source)
-    code = "import sys, robotconf._check_hints; assert 'sympy' not in sys.modules"
+    code = "import sys, robotconf.teaching; assert 'sympy' not in sys.modules"
     subprocess.run([sys.executable, "-c", code], check=True)

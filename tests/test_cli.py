@@ -12,7 +12,7 @@ import numpy as np
 import pytest
 
 import robotconf as rc
-from robotconf._cli import main
+from robotconf.cli import main
 from robotconf.signals import Ramp, RepeatingSequence, Sine
 
 PNG_SIGNATURE = b"\x89PNG\r\n\x1a\n"

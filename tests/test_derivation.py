@@ -7,7 +7,7 @@ import pytest
 import sympy
 
 from robotconf import Module, Robot
-from robotconf._derivation import Derivation, derivation, format_number
+from robotconf.teaching import Derivation, derivation, format_number
 
 q1, q2, q3, l1, l2, l3 = sympy.symbols("q1 q2 q3 l1 l2 l3", real=True)
 

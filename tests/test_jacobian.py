@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import robotconf as rc
-from robotconf._jacobian import jacobian
+from robotconf.kinematics import jacobian
 
 
 @pytest.fixture

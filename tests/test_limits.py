@@ -118,10 +118,14 @@ def test_with_limits_by_index_and_name():
 @pytest.mark.parametrize(
     ("index", "limits", "match"),
     [
-        ("M9", (0, 1), r"index: unknown module 'M9'; allowed: a module name \(M1, M2\)"),
+        (
+            "M9",
+            (0, 1),
+            r"index: unknown module 'M9'; allowed: an index 0 to 1, a module name \(M1, M2\)",
+        ),
         (2, (0, 1), r"index: out of range: 2"),
-        (True, (0, 1), r"index: not an index or name: True"),
-        (1.0, (0, 1), r"index: not an index or name"),
+        (True, (0, 1), r"index: not an integer: True"),
+        (1.0, (0, 1), r"index: not an integer"),
         (1, (0, 1), r"modules\[1\]\.limits: a 'fixed' module has no joint"),
         (0, (1, 0), r"modules\[0\]\.limits: lower limit must be below"),
     ],

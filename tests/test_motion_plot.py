@@ -10,8 +10,8 @@ import numpy as np  # noqa: E402
 import pytest  # noqa: E402
 
 import robotconf as rc  # noqa: E402
-from robotconf._motion_plot import kink_note, plot_motion  # noqa: E402
-from robotconf._simulation import simulate  # noqa: E402
+from robotconf.motion import simulate  # noqa: E402
+from robotconf.plots import kink_note, plot_motion  # noqa: E402
 from robotconf.signals import Quintic, RepeatingSequence  # noqa: E402
 
 

@@ -9,9 +9,14 @@ import pandas as pd
 import pytest
 
 import robotconf as rc
-from robotconf._dva import QUANTITIES
-from robotconf._motion_table import EXCEL_MAX_ROWS, STATS, compare_motions, motion_stats
-from robotconf._simulation import simulate
+from robotconf.motion import (
+    EXCEL_MAX_ROWS,
+    QUANTITIES,
+    STATS,
+    compare_motions,
+    motion_stats,
+    simulate,
+)
 from robotconf.signals import RepeatingSequence, Sine
 
 
@@ -167,8 +172,8 @@ def test_pandas_is_not_imported_by_the_core() -> None:
     import subprocess
 
     code = (
-        "import sys, robotconf, robotconf.signals, robotconf._simulation, robotconf._jacobian;"
-        "import robotconf._motion_table, robotconf._motion_plot;"
+        "import sys, robotconf, robotconf.signals, robotconf.motion, robotconf.kinematics;"
+        "import robotconf.plots;"
         "print('pandas' in sys.modules, 'matplotlib' in sys.modules)"
     )
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True)

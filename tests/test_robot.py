@@ -150,7 +150,7 @@ def test_end_effector_point_is_a_copy(paper_robot):
 
 
 def test_out_parameter_reuses_memory(paper_robot, rng):
-    from robotconf._kinematics import chain_poses
+    from robotconf.kinematics import chain_poses
 
     q = rng.uniform(-1, 1, (50, 3))
     out = np.full((50, 3, 4, 4), np.nan)
@@ -173,7 +173,7 @@ def test_out_parameter_reuses_memory(paper_robot, rng):
 
 @pytest.mark.parametrize("block_size", [1, 3, 64])
 def test_block_boundaries_do_not_change_results(block_size, rng):
-    from robotconf._kinematics import chain_origins, chain_poses
+    from robotconf.kinematics import chain_origins, chain_poses
 
     robot = six_module_robot()
     q = rng.uniform(-3, 3, (100, robot.n))

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import robotconf as rc
-from robotconf._robot_plot import EE_COLOR, MODULE_COLOR, plot_robot
+from robotconf.plots import EE_COLOR, MODULE_COLOR, plot_robot
 
 
 def _line(ax, label):

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import robotconf as rc
-from robotconf._robot_points import RobotPoint, format_point, robot_points
+from robotconf.kinematics import RobotPoint, format_point, robot_points
 
 
 def test_paper_parking_position_points(paper_robot):

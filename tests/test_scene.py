@@ -10,11 +10,21 @@ import numpy as np
 import pytest
 
 import robotconf as rc
-from robotconf.scene import RecordingChannel, Scene
-from robotconf.scene._commands import ROOT, SceneLog, pack_ops, transforms_op
-from robotconf.scene._drawing import RobotDrawing, robot_size
-from robotconf.scene._placement import align_y, compose, quaternions
-from robotconf.scene._widget import WidgetChannel, _coalesce
+from robotconf.scene import (
+    ROOT,
+    RecordingChannel,
+    RobotDrawing,
+    Scene,
+    SceneLog,
+    WidgetChannel,
+    align_y,
+    coalesce_ops,
+    compose,
+    pack_ops,
+    quaternions,
+    robot_size,
+    transforms_op,
+)
 
 from .conftest import L1, L2, L3
 
@@ -179,7 +189,7 @@ def test_widget_channel_replays_to_a_new_view_and_coalesces(paper_robot: rc.Robo
     json.dumps(content)  # the comm sends JSON plus binary buffers
     a = transforms_op(["/x"], np.eye(4)[None])
     b = transforms_op(["/x"], 2 * np.eye(4)[None])
-    assert _coalesce([a, b]) == [b]
+    assert coalesce_ops([a, b]) == [b]
 
 
 def test_update_rejects_bad_q_and_keeps_the_pose(scene: Scene) -> None:

@@ -8,8 +8,8 @@ import numpy as np
 import pytest
 
 from robotconf import InvalidInputError
-from robotconf._signal_spec import MAX_SPEC_LENGTH, parse_signal, parse_signal_spec
 from robotconf.signals import (
+    MAX_SPEC_LENGTH,
     Constant,
     Cubic,
     Quintic,
@@ -18,6 +18,8 @@ from robotconf.signals import (
     Sine,
     Step,
     Trapezoidal,
+    parse_signal,
+    parse_signal_spec,
 )
 
 

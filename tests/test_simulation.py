@@ -6,9 +6,8 @@ import numpy as np
 import pytest
 
 import robotconf as rc
-from robotconf._dva import QUANTITIES
-from robotconf._jacobian import jacobian
-from robotconf._simulation import Motion, simulate
+from robotconf.kinematics import jacobian
+from robotconf.motion import QUANTITIES, Motion, simulate
 from robotconf.signals import Constant, Cubic, Quintic, RepeatingSequence, Sine
 
 

@@ -10,7 +10,7 @@ import pytest
 import sympy
 
 from robotconf import DHLink, Module, Robot, dh_matrix, transfer_matrix
-from robotconf._symbolic import (
+from robotconf.teaching import (
     dh_factors,
     elementary_matrix,
     exact_number,
@@ -219,9 +219,7 @@ def test_error_branches():
 
 def test_import_robotconf_stays_numpy_only():
     code = (
-        "import sys, robotconf, robotconf._symbolic, robotconf._derivation, "
-        "robotconf._student_parser, robotconf._checking, robotconf._expected, "
-        "robotconf._mistakes, robotconf._rendering, robotconf._check_result; "
+        "import sys, robotconf, robotconf.teaching; "
         "assert 'sympy' not in sys.modules, 'sympy imported'; "
         "assert 'pandas' not in sys.modules"
     )

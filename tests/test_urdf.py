@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import robotconf as rc
-from robotconf._urdf import PLACEHOLDER_EFFORT, rpy_from_matrix, to_urdf
+from robotconf.io import PLACEHOLDER_EFFORT, rpy_from_matrix, to_urdf
 from tests.conftest import assert_transform_close
 
 yourdfpy = pytest.importorskip("yourdfpy")

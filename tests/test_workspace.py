@@ -2,14 +2,14 @@
 
 from __future__ import annotations
 
+import sys
 import time
 
 import numpy as np
 import pytest
 
 import robotconf as rc
-from robotconf import _workspace
-from robotconf._workspace import grid_size, workspace
+from robotconf.kinematics import grid_size, workspace
 
 FULL_TURN = (-np.pi, np.pi)
 
@@ -191,7 +191,8 @@ def test_progress_true_forces_a_bar(planar_2r, bars):
 def test_progress_auto_appears_for_long_runs_only(planar_2r, bars, monkeypatch):
     workspace(planar_2r, 200_000, ranges=[FULL_TURN] * 2)  # well under a second
     assert bars == []
-    monkeypatch.setattr(_workspace, "PROGRESS_AFTER", 0.0)  # every run looks "long"
+    # every run looks "long" (the threshold is a global of the function's own module)
+    monkeypatch.setattr(sys.modules[workspace.__module__], "PROGRESS_AFTER", 0.0)
     workspace(planar_2r, 200_000, ranges=[FULL_TURN] * 2)
     assert len(bars) == 1 and bars[0].done == 200_000
     workspace(planar_2r, 200_000, ranges=[FULL_TURN] * 2, progress=False)

@@ -14,11 +14,10 @@ from typing import Any
 
 import ipywidgets as widgets
 
-from .._dh import DHLink
 from .._errors import InvalidInputError
-from .._module import Module
-from .._robot import Robot
-from .._simulation import Motion
+from ..kinematics import DHLink, Robot
+from ..motion import Motion
+from ..presets import preset, preset_names
 from ._dh_table import DHTable
 from ._errors_display import ErrorLabel, collect_errors
 from ._files_section import FilesSection
@@ -37,19 +36,8 @@ _MODES = (("Modules", "modules"), ("DH table", "dh"), ("Guided", "wizard"))
 _SCENE_TAB, _MATRICES_TAB, _MOTION_TAB, _FILES_TAB = range(4)
 
 
-def _preset_names() -> list[str]:
-    import robotconf
-
-    names = getattr(robotconf, "preset_names", None)
-    return list(names()) if names is not None else []
-
-
 def _default_robot() -> Robot:
-    import robotconf
-
-    if "paper" in _preset_names():
-        return robotconf.preset("paper")
-    return Robot([Module("Rz")], end_effector=(1.0, 0.0, 0.0))
+    return preset("paper")
 
 
 class Configurator:
@@ -115,7 +103,7 @@ class Configurator:
         self._robot = robot
         self._loading = False
         self.title = widgets.HTML("<h3 style='margin:4px 0'>robotconf configurator</h3>")
-        names = _preset_names()
+        names = preset_names()
         self.preset = widgets.Dropdown(
             options=[("— preset —", ""), *((n, n) for n in names)],
             value=robot.name if robot.name in names else "",
@@ -331,11 +319,9 @@ class Configurator:
         name = change["new"]
         if not name or self._loading:
             return
-        import robotconf
-
         self.preset_error.clear()
         try:
-            robot = robotconf.preset(name)
+            robot = preset(name)
         except InvalidInputError as error:
             self.preset_error.show(str(error))
             return

@@ -8,9 +8,9 @@ from typing import Any
 
 import ipywidgets as widgets
 
-from .._dh import DH_CONVENTIONS, DHLink
 from .._errors import InvalidInputError
 from .._validation import check_finite_number
+from ..kinematics import DH_CONVENTIONS, DHLink
 from ._errors_display import ErrorLabel
 from ._number_control import NumberControl
 from ._ranges import q_range
@@ -26,7 +26,7 @@ _CONVENTION_TIPS = (
 
 def _empty_table_message() -> str:
     """The core's own message for a DH table without rows."""
-    from .._robot import Robot
+    from ..kinematics import Robot
 
     try:
         Robot.from_dh([])

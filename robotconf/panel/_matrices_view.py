@@ -12,10 +12,9 @@ from typing import Any
 import ipywidgets as widgets
 import numpy as np
 
-from .._derivation import Derivation, derivation
 from .._errors import InvalidInputError
-from .._rendering import format_number
-from .._robot import Robot
+from ..kinematics import Robot
+from ..teaching import Derivation, derivation, format_number
 
 __all__ = ["MatricesView", "end_effector_text"]
 

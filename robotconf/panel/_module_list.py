@@ -8,9 +8,7 @@ from typing import Any
 import ipywidgets as widgets
 
 from .._errors import InvalidInputError
-from .._link import Link
-from .._module import Module
-from .._robot import Robot
+from ..kinematics import Link, Module, Robot
 from ._errors_display import ErrorLabel
 from ._module_row import ModuleRow
 from ._row_list import ChangeCallback, RowList

@@ -8,9 +8,8 @@ from typing import Any
 import ipywidgets as widgets
 
 from .._errors import InvalidInputError
-from .._link import Link
-from .._module import MODULE_KINDS, Module
 from .._validation import check_finite_number
+from ..kinematics import MODULE_KINDS, Link, Module
 from ._errors_display import ErrorLabel
 from ._number_control import NumberControl
 from ._ranges import q_range

@@ -12,7 +12,7 @@ from ._images import download_link, figure_png
 if TYPE_CHECKING:
     import pandas as pd
 
-    from .._simulation import Motion
+    from ..motion import Motion
 
 __all__ = ["MotionResults", "MAX_TABLE_ROWS"]
 

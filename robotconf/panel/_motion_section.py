@@ -8,8 +8,8 @@ from typing import Any
 import ipywidgets as widgets
 
 from .._errors import InvalidInputError
-from .._robot import Robot
-from .._simulation import METHODS, Motion, simulate
+from ..kinematics import Robot
+from ..motion import METHODS, Motion, simulate
 from ..signals import Signal
 from ._errors_display import ErrorLabel
 from ._motion_results import MotionResults

@@ -34,7 +34,7 @@ def length_scale(robot: Any) -> float:
     >>> length_scale(rc.Robot([rc.Module("Rz", a=(0, 0, 20))], end_effector=(40, 0, 0)))
     100.0
     """
-    from .._limits import characteristic_length
+    from ..kinematics import characteristic_length
 
     return nice_ceiling(characteristic_length(robot))
 

@@ -11,8 +11,8 @@ import os
 from collections.abc import Mapping
 from typing import Any
 
-from .._files import load_setup
-from .._robot import Robot
+from ..io import load_setup
+from ..kinematics import Robot
 from ..signals import Signal
 
 __all__ = ["setup_to_json", "setup_from"]

@@ -14,9 +14,8 @@ from typing import Any
 import ipywidgets as widgets
 
 from .._errors import InvalidInputError
-from .._module import Module
-from .._robot import Robot
 from .._validation import check_finite_number
+from ..kinematics import Module, Robot
 from ._errors_display import ErrorLabel
 from ._matrices_view import end_effector_text
 from ._module_row import KIND_OPTIONS
@@ -42,7 +41,7 @@ def _formula(kind: str, index: int, a: Any = None) -> str:
     """LaTeX of ``A_i`` from the core's symbolic table, with symbols or the typed offsets."""
     import sympy
 
-    from .._symbolic import exact_number, module_matrix
+    from ..teaching import exact_number, module_matrix
 
     q = sympy.Symbol(f"q{index}", real=True)
     if a is None:

@@ -18,7 +18,7 @@ from collections.abc import Callable
 from typing import Any
 
 from .._errors import InvalidInputError
-from .._robot import Robot
+from ..kinematics import Robot
 from ._classic import articulated, cartesian, cylindrical, planar_2r, planar_3r, scara, spherical
 from ._industrial import puma560, stanford, ur5
 from ._paper import paper

@@ -12,10 +12,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._dh import DHLink
-from .._module import Module
-from .._robot import Robot
 from .._validation import check_finite_number
+from ..kinematics import DHLink, Module, Robot
 
 __all__ = [
     "cartesian",

@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._dh import DHLink
-from .._robot import Robot
 from .._validation import check_finite_number
+from ..kinematics import DHLink, Robot
 
 __all__ = ["stanford", "puma560", "ur5"]
 

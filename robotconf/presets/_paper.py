@@ -4,9 +4,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._module import Module
-from .._robot import Robot
 from .._validation import check_finite_number
+from ..kinematics import Module, Robot
 
 __all__ = ["paper"]
 

@@ -1,13 +1,54 @@
 """The 3D scene: the robot in meshcat's three.js viewer, inside any notebook front end.
 
->>> import robotconf as rc
->>> from robotconf.scene import RecordingChannel, Scene
->>> scene = Scene(rc.Robot([rc.Module("Tz")], end_effector=(0, 0, 1)), channel=RecordingChannel())
+Presentation: every position drawn comes from :mod:`robotconf.kinematics`.
+
+The scene
+    :class:`Scene`, :func:`view`, :class:`RecordingChannel` (a channel that records
+    instead of sending: tests and the offline HTML export use it)
+Building blocks
+    :class:`RobotDrawing`, :func:`robot_size`, :class:`SceneLog`, :func:`pack_ops`,
+    :func:`transforms_op`, :func:`align_y`, :func:`compose`, :func:`quaternions`;
+    :class:`WidgetChannel` and :func:`coalesce_ops` (these two import anywidget on use)
+
+>>> from robotconf.kinematics import Module, Robot
+>>> scene = Scene(Robot([Module("Tz")], end_effector=(0, 0, 1)), channel=RecordingChannel())
 >>> scene.labels()
 ['M1 (0.0, 0.0, 0.0)', 'EE (0.0, 0.0, 1.0)']
 """
 
-from ._commands import RecordingChannel
+from typing import Any
+
+from ._commands import ROOT, RecordingChannel, SceneLog, pack_ops, transforms_op
+from ._drawing import RobotDrawing, robot_size
+from ._placement import align_y, compose, quaternions
 from ._scene import Scene, view
 
-__all__ = ["RecordingChannel", "Scene", "view"]
+__all__ = [
+    # the scene
+    "Scene",
+    "view",
+    "RecordingChannel",
+    # building blocks
+    "RobotDrawing",
+    "robot_size",
+    "SceneLog",
+    "ROOT",
+    "pack_ops",
+    "transforms_op",
+    "align_y",
+    "compose",
+    "quaternions",
+    "WidgetChannel",
+    "coalesce_ops",
+]
+
+# The widget transport imports anywidget and ipywidgets: only when asked for.
+_LAZY = ("WidgetChannel", "coalesce_ops")
+
+
+def __getattr__(name: str) -> Any:
+    if name in _LAZY:
+        from . import _widget
+
+        return getattr(_widget, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -14,10 +14,8 @@ from typing import Any
 
 import numpy as np
 
-from .._joint_axes import joint_axes
-from .._robot import Robot
-from .._robot_points import END_EFFECTOR_LABEL, format_point
 from .._validation import check_joint_values
+from ..kinematics import END_EFFECTOR_LABEL, Robot, format_point, joint_axes
 from ._placement import Placement, align_y, segment_placement
 
 __all__ = ["DrawnItem", "RobotDrawing", "robot_size", "COLORS"]

@@ -13,8 +13,8 @@ from typing import Any
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._robot import Robot
 from .._validation import check_joint_values
+from ..kinematics import Robot
 from ._animation import animation_command
 from ._commands import (
     ROOT,

@@ -23,7 +23,7 @@ from ipywidgets import widget_serialization
 
 from ._commands import Op, pack_ops
 
-__all__ = ["SceneWidget", "WidgetChannel", "meshcat_source", "script"]
+__all__ = ["SceneWidget", "WidgetChannel", "coalesce_ops", "meshcat_source", "script"]
 
 _JS = Path(__file__).parent / "js"
 
@@ -95,7 +95,7 @@ class WidgetChannel:
 
     def send(self, ops: list[Op]) -> None:
         """Send now, or hold the ops for the end-of-burst flush if the rate is exceeded."""
-        self._pending = _coalesce(self._pending + list(ops))
+        self._pending = coalesce_ops(self._pending + list(ops))
         now = time.perf_counter()
         if now - self._last >= self._interval:
             self.flush()
@@ -140,7 +140,7 @@ class WidgetChannel:
         self.widget.close()
 
 
-def _coalesce(ops: list[Op]) -> list[Op]:
+def coalesce_ops(ops: list[Op]) -> list[Op]:
     # Held transforms and labels are state, not events: only the newest of each counts.
     latest: dict[tuple[str, str], int] = {}
     for k, op in enumerate(ops):

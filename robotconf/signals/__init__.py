@@ -20,6 +20,7 @@ from ._profiles import Cubic, Quintic, Trapezoidal
 from ._repeating import RepeatingSequence
 from ._serialize import SIGNAL_TYPES, signal_from_dict
 from ._sources import Constant, Ramp, Sine, Step
+from ._spec import MAX_SPEC_LENGTH, SIGNAL_KINDS, SPEC_HELP, parse_signal, parse_signal_spec
 
 __all__ = [
     "Affine",
@@ -34,5 +35,11 @@ __all__ = [
     "Sine",
     "Step",
     "Sum",
+    # text specs such as "q3=sine:amplitude=0.5,frequency=0.2"
+    "parse_signal_spec",
+    "parse_signal",
+    "SIGNAL_KINDS",
+    "SPEC_HELP",
+    "MAX_SPEC_LENGTH",
     "Trapezoidal",
 ]

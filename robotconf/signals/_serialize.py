@@ -12,6 +12,7 @@ from dataclasses import fields
 from typing import Any
 
 from .._errors import InvalidInputError
+from .._validation import Rejected
 from ._base import Affine, Signal, Sum
 from ._profiles import Cubic, Quintic, Trapezoidal
 from ._repeating import RepeatingSequence
@@ -44,20 +45,6 @@ MAX_SIGNAL_DEPTH = 16
 MAX_SUM_TERMS = 64
 
 _TABLES = ("times", "values")
-
-
-class Rejected:
-    """Stands in for a JSON number robotconf refuses (NaN, ±Infinity, overflow, huge ints)
-    until a reader reaches it and can name its path (robotconf._files parses files so)."""
-
-    __slots__ = ("text", "reason")
-
-    def __init__(self, text: str, reason: str):
-        self.text = text
-        self.reason = reason
-
-    def __repr__(self) -> str:
-        return self.text
 
 
 def _parameters(cls: type[Signal]) -> tuple[str, ...]:

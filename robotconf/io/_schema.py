@@ -1,0 +1,301 @@
+"""The robotconf file schema (version 1): plain JSON data ⇄ robots, strictly validated.
+
+Every reader here takes already-parsed JSON data (dicts, lists, str, int, float, None) and
+a *path* such as ``robot.links[2]``; every error names that path, the value and what is
+allowed. Nothing is ever evaluated. docs/file-format.md describes the schema.
+"""
+
+from __future__ import annotations
+
+import math
+from collections.abc import Mapping
+from typing import TYPE_CHECKING, Any
+
+from .._errors import InvalidInputError
+from .._validation import Rejected
+from ..kinematics import MODULE_KINDS, DHLink, Module
+
+if TYPE_CHECKING:
+    from ..kinematics import Robot
+
+__all__ = [
+    "FORMAT",
+    "VERSION",
+    "MAX_LINKS",
+    "MAX_NAME_CHARS",
+    "MAX_SAMPLES",
+    "robot_to_dict",
+    "robot_from_dict",
+    "check_simulation",
+]
+
+#: The value of the top-level ``"format"`` key.
+FORMAT = "robotconf"
+#: The schema version this robotconf writes and the newest it reads.
+VERSION = 1
+#: Most links in a file: a teaching tool's robots have a handful; 64 is generous.
+MAX_LINKS = 64
+#: Longest robot or link name.
+MAX_NAME_CHARS = 200
+#: Most time samples a file's simulation settings may ask for ((t_end − t0)/dt + 1).
+MAX_SAMPLES = 10_000_000
+
+_MODULE_KEYS = {"type": True, "kind": True, "a": False, "q": False, "name": False, "limits": False}
+_DH_KEYS = {
+    "type": True,
+    "theta": True,
+    "d": True,
+    "a": True,
+    "alpha": True,
+    "joint": True,
+    "convention": True,
+    "q": False,
+    "name": False,
+    "limits": False,
+}
+_ROBOT_KEYS = {"links": True, "name": False, "end_effector": False, "active": False}
+_SIMULATION_KEYS = {"t_end": True, "dt": False, "t0": False, "method": False}
+
+
+class JSONObject(dict):  # type: ignore[type-arg]
+    """A parsed JSON object that remembers keys given twice (json keeps only the last)."""
+
+    duplicates: tuple[str, ...] = ()
+
+
+def check_object(value: Any, path: str, keys: Mapping[str, bool]) -> Mapping[str, Any]:
+    """``value`` as a dict with only the known ``keys`` (True: required) and no duplicates.
+
+    >>> check_object({"t_end": 1.0}, "simulation", {"t_end": True, "dt": False})
+    {'t_end': 1.0}
+    """
+    allowed = ", ".join(f"{k}" if required else f"{k} (optional)" for k, required in keys.items())
+    if not isinstance(value, Mapping):
+        raise InvalidInputError(
+            path, value, f"an object with keys {allowed}", problem="expected an object, got"
+        )
+    duplicates = getattr(value, "duplicates", ())
+    if duplicates:
+        raise InvalidInputError(
+            f"{path}.{duplicates[0]}", duplicates[0], "each key once", problem="duplicate key"
+        )
+    for key in value:
+        if key not in keys:
+            raise InvalidInputError(
+                f"{path}.{key}", value[key], f"the keys {allowed}", problem="unknown key, value"
+            )
+    for key, required in keys.items():
+        if required and key not in value:
+            raise InvalidInputError(f"{path}.{key}", None, f"the keys {allowed}", problem="missing")
+    return value
+
+
+def number(value: Any, path: str) -> float:
+    """A finite JSON number as float; ``true``/``false``, text, NaN and infinities refused.
+
+    >>> number(20, "robot.links[1].a[2]")
+    20.0
+    >>> number(True, "robot.links[0].q")
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: robot.links[0].q: expected a number, got a boolean: True; ...
+    """
+    allowed = "a finite number"
+    if isinstance(value, Rejected):
+        raise InvalidInputError(path, value, allowed, problem=f"{value.reason}:")
+    if isinstance(value, bool):
+        raise InvalidInputError(path, value, allowed, problem="expected a number, got a boolean:")
+    if not isinstance(value, (int, float)):
+        raise InvalidInputError(path, value, allowed, problem="expected a number, got")
+    try:
+        result = float(value)
+    except OverflowError:
+        raise InvalidInputError(path, value, allowed, problem="too large:") from None
+    if not math.isfinite(result):
+        raise InvalidInputError(path, result, allowed, problem="must be finite, got")
+    return result
+
+
+def numbers(value: Any, path: str, count: int) -> list[float]:
+    """A JSON list of exactly ``count`` finite numbers."""
+    if not isinstance(value, list) or len(value) != count:
+        raise InvalidInputError(
+            path, value, f"a list of {count} finite numbers", problem=f"expected {count} numbers:"
+        )
+    return [number(v, f"{path}[{i}]") for i, v in enumerate(value)]
+
+
+def text(value: Any, path: str, choices: tuple[str, ...] | None = None) -> str:
+    """A JSON string (optionally one of ``choices``), at most MAX_NAME_CHARS long."""
+    allowed = " or ".join(repr(c) for c in choices) if choices else "text"
+    if not isinstance(value, str):
+        raise InvalidInputError(path, value, allowed, problem="expected text, got")
+    if choices is not None and value not in choices:
+        raise InvalidInputError(path, value, allowed, problem="unknown value")
+    if len(value) > MAX_NAME_CHARS:
+        raise InvalidInputError(
+            path, value, f"text of at most {MAX_NAME_CHARS} characters", problem="too long:"
+        )
+    return value
+
+
+def _optional_name(value: Any, path: str) -> str | None:
+    return None if value is None else text(value, path)
+
+
+def _limits(value: Any, path: str) -> list[float] | None:
+    return None if value is None else numbers(value, path, 2)
+
+
+def _build(factory: Any, path: str, **values: Any) -> Any:
+    """Call a constructor; its own validation errors get the file path in front."""
+    try:
+        return factory(**values)
+    except InvalidInputError as error:
+        raise error.within(path) from None
+
+
+def link_from_dict(value: Any, path: str) -> Module | DHLink:
+    """One entry of ``robot.links``: a module or a DH row."""
+    if not isinstance(value, Mapping) or value.get("type") not in ("module", "dh"):
+        kind = value.get("type") if isinstance(value, Mapping) else value
+        raise InvalidInputError(
+            f"{path}.type" if isinstance(value, Mapping) else path,
+            kind,
+            'an object with "type": "module" or "dh"',
+            problem="unknown link type",
+        )
+    if value["type"] == "module":
+        check_object(value, path, _MODULE_KEYS)
+        kinds = (*MODULE_KINDS, "null")
+        return _build(
+            Module,
+            path,
+            kind=text(value["kind"], f"{path}.kind", kinds),
+            a=numbers(value.get("a", [0.0, 0.0, 0.0]), f"{path}.a", 3),
+            q=number(value.get("q", 0.0), f"{path}.q"),
+            name=_optional_name(value.get("name"), f"{path}.name"),
+            limits=_limits(value.get("limits"), f"{path}.limits"),
+        )
+    check_object(value, path, _DH_KEYS)
+    fields = {key: number(value[key], f"{path}.{key}") for key in ("theta", "d", "a", "alpha")}
+    return _build(
+        DHLink,
+        path,
+        **fields,
+        joint=text(value["joint"], f"{path}.joint", ("R", "P")),
+        convention=text(value["convention"], f"{path}.convention", ("standard", "modified")),
+        q=number(value.get("q", 0.0), f"{path}.q"),
+        name=_optional_name(value.get("name"), f"{path}.name"),
+        limits=_limits(value.get("limits"), f"{path}.limits"),
+    )
+
+
+def robot_from_dict(value: Any, path: str = "robot") -> Robot:
+    """The ``"robot"`` object of a file as a :class:`~robotconf.Robot`.
+
+    >>> robot_from_dict({"links": [{"type": "module", "kind": "Rz"}], "end_effector": [1, 0, 0]})
+    Robot([
+        Module('Rz'),
+    ], end_effector=(1.0, 0.0, 0.0))
+    """
+    from ..kinematics import Robot  # local: _robot imports the file methods
+
+    check_object(value, path, _ROBOT_KEYS)
+    links = value["links"]
+    allowed = f"a list of 1 to {MAX_LINKS} links"
+    if not isinstance(links, list) or not links:
+        raise InvalidInputError(f"{path}.links", links, allowed, problem="not a non-empty list:")
+    if len(links) > MAX_LINKS:
+        raise InvalidInputError(
+            f"{path}.links", f"<{len(links)} links>", allowed, problem="too many links:"
+        )
+    active = value.get("active")
+    if active is not None and (isinstance(active, bool) or not isinstance(active, int)):
+        raise InvalidInputError(
+            f"{path}.active", active, "an integer or null", problem="expected an integer, got"
+        )
+    return _build(
+        Robot,
+        path,
+        modules=[link_from_dict(link, f"{path}.links[{i}]") for i, link in enumerate(links)],
+        end_effector=numbers(value.get("end_effector", [0.0, 0.0, 0.0]), f"{path}.end_effector", 3),
+        active=active,
+        name=_optional_name(value.get("name"), f"{path}.name"),
+    )
+
+
+def _limits_out(limits: tuple[float, float] | None) -> list[float] | None:
+    return None if limits is None else list(limits)
+
+
+def robot_to_dict(robot: Robot) -> dict[str, Any]:
+    """The ``"robot"`` object of a file: every key written, also defaults.
+
+    >>> import robotconf as rc
+    >>> robot_to_dict(rc.Robot([rc.Module("Rz")]))["links"]
+    [{'type': 'module', 'kind': 'Rz', 'a': [0.0, 0.0, 0.0], 'q': 0.0, 'name': None, 'limits': None}]
+    """
+    links: list[dict[str, Any]] = []
+    for i, link in enumerate(robot.modules):
+        if isinstance(link, Module):
+            links.append(
+                {
+                    "type": "module",
+                    "kind": link.kind,
+                    "a": list(link.a),
+                    "q": link.q,
+                    "name": link.name,
+                    "limits": _limits_out(link.limits),
+                }
+            )
+        elif isinstance(link, DHLink):
+            entry: dict[str, Any] = {"type": "dh"}
+            for key in ("theta", "d", "a", "alpha", "joint", "convention", "q", "name"):
+                entry[key] = getattr(link, key)
+            entry["limits"] = _limits_out(link.limits)
+            links.append(entry)
+        else:
+            raise InvalidInputError(
+                f"modules[{i}]", link, "Module or DHLink", problem="cannot be written to a file:"
+            )
+    active = None if robot.active == robot.n else robot.active
+    return {
+        "name": robot.name,
+        "end_effector": list(robot.end_effector_point.tolist()),
+        "active": active,
+        "links": links,
+    }
+
+
+def check_simulation(value: Any, path: str = "simulation") -> dict[str, Any]:
+    """Simulation settings: ``t_end`` (required), ``dt``, ``t0`` (s) and ``method``.
+
+    Keys left out take :func:`~robotconf.simulate`'s defaults (``dt = 0.001``, ``t0 = 0``,
+    ``method = "analytic"``); at most :data:`MAX_SAMPLES` samples.
+
+    >>> check_simulation({"t_end": 10, "dt": 0.01})
+    {'t_end': 10.0, 'dt': 0.01}
+    """
+    check_object(value, path, _SIMULATION_KEYS)
+    out: dict[str, Any] = {}
+    for key in ("t_end", "dt", "t0"):
+        if key in value:
+            out[key] = number(value[key], f"{path}.{key}")
+    if "method" in value:
+        out["method"] = text(value["method"], f"{path}.method", ("analytic", "numeric"))
+    t0, dt = out.get("t0", 0.0), out.get("dt", 1e-3)
+    if dt <= 0.0:
+        raise InvalidInputError(f"{path}.dt", dt, "a time step > 0 (s)", problem="must be > 0:")
+    if out["t_end"] <= t0:
+        raise InvalidInputError(
+            f"{path}.t_end", out["t_end"], f"a time after t0 = {t0} s", problem="not after t0:"
+        )
+    if (out["t_end"] - t0) / dt + 1 > MAX_SAMPLES:
+        raise InvalidInputError(
+            f"{path}.dt",
+            dt,
+            f"at most {MAX_SAMPLES:.0e} samples: a larger dt or a shorter run",
+            problem="too many samples at",
+        )
+    return out

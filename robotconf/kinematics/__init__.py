@@ -1,0 +1,141 @@
+"""Kinematics: modules and DH links, robots, the vectorized kernel, Jacobians, workspaces.
+
+This folder is the numpy core. Everything here imports numpy only.
+
+Robots and links
+    :class:`Robot`, :class:`Module`, :class:`DHLink`, :class:`Link`, :func:`transfer_matrix`,
+    :func:`dh_matrix`, :func:`kind_name`, :func:`check_convention`, :func:`characteristic_length`
+Conventions (data, see docs/conventions.md)
+    :data:`MODULE_KINDS`, :data:`MODULE_CODES`, :data:`JOINT_TYPES`, :data:`AXIS_NAMES`,
+    :data:`DH_CONVENTIONS`, :data:`DH_FACTORS`, :func:`dh_formula`, …
+Points, axes and Jacobians
+    :func:`robot_points`, :func:`format_point`, :func:`joint_axes`, :func:`jacobian`
+DH ⇄ modules, workspace
+    :func:`dh_to_modules`, :func:`modules_to_dh`, :func:`workspace`, :class:`Workspace`
+Building blocks (the kernel and the component-major helpers the motion layer uses)
+    :class:`LinkGeometry`, :func:`chain_poses`, :func:`chain_origins`, :func:`chain_point`,
+    :func:`link_matrices`, :func:`joint_screws`, :func:`pose_components`, …
+
+>>> from robotconf.kinematics import Module, Robot
+>>> Robot([Module("Rz"), Module("Tx", a=(0, 0, 1))]).end_effector([0.0, 2.0])
+array([2., 0., 1.])
+"""
+
+from ._conventions import (
+    AXIS_NAMES,
+    DH_CONVENTIONS,
+    DH_FACTORS,
+    DH_PARAMETERS,
+    DH_SYMBOLS,
+    JOINT_LETTERS,
+    JOINT_OF_LETTER,
+    JOINT_TYPES,
+    JOINT_UNITS,
+    KIND_ALIASES,
+    MODULE_CODES,
+    MODULE_KINDS,
+    ROTATION_KINDS,
+    TRANSLATION_KINDS,
+    dh_formula,
+    kind_axis,
+    kind_joint_type,
+    kind_label,
+)
+from ._dh import DHLink, check_convention, dh_link_from_row, dh_matrix
+from ._dh_conversion import dh_to_modules, modules_to_dh
+from ._geometry import LinkGeometry
+from ._jacobian import (
+    JointScrew,
+    cross_components,
+    ee_position,
+    jacobian,
+    joint_screws,
+    point_names,
+    pose_components,
+    rotate_components,
+)
+from ._joint_axes import JointAxes, joint_axes
+from ._kernel import (
+    BLOCK_SIZE,
+    chain_origins,
+    chain_point,
+    chain_point_pose,
+    chain_poses,
+    cos_sin,
+    link_matrices,
+)
+from ._limits import chain_length, chain_limits, check_limits, default_limits
+from ._link import Link
+from ._module import Module, kind_name, transfer_matrix
+from ._points import END_EFFECTOR_LABEL, RobotPoint, format_point, robot_points
+from ._robot import Robot, characteristic_length
+from ._workspace import MAX_WORKSPACE_SAMPLES, WORKSPACE_METHODS, Workspace, grid_size, workspace
+
+__all__ = [
+    # robots and links
+    "Robot",
+    "Module",
+    "DHLink",
+    "Link",
+    "transfer_matrix",
+    "dh_matrix",
+    "kind_name",
+    "check_convention",
+    "dh_link_from_row",
+    "characteristic_length",
+    "check_limits",
+    "chain_length",
+    "chain_limits",
+    "default_limits",
+    # conventions
+    "MODULE_KINDS",
+    "MODULE_CODES",
+    "KIND_ALIASES",
+    "ROTATION_KINDS",
+    "TRANSLATION_KINDS",
+    "AXIS_NAMES",
+    "JOINT_TYPES",
+    "JOINT_LETTERS",
+    "JOINT_OF_LETTER",
+    "JOINT_UNITS",
+    "DH_CONVENTIONS",
+    "DH_PARAMETERS",
+    "DH_FACTORS",
+    "DH_SYMBOLS",
+    "kind_joint_type",
+    "kind_axis",
+    "kind_label",
+    "dh_formula",
+    # points, axes, Jacobians
+    "RobotPoint",
+    "robot_points",
+    "format_point",
+    "END_EFFECTOR_LABEL",
+    "point_names",
+    "JointAxes",
+    "joint_axes",
+    "jacobian",
+    # DH ⇄ modules, workspace
+    "dh_to_modules",
+    "modules_to_dh",
+    "workspace",
+    "Workspace",
+    "WORKSPACE_METHODS",
+    "MAX_WORKSPACE_SAMPLES",
+    "grid_size",
+    # building blocks
+    "LinkGeometry",
+    "BLOCK_SIZE",
+    "cos_sin",
+    "chain_poses",
+    "chain_origins",
+    "chain_point",
+    "chain_point_pose",
+    "link_matrices",
+    "JointScrew",
+    "joint_screws",
+    "pose_components",
+    "ee_position",
+    "cross_components",
+    "rotate_components",
+]

@@ -1,0 +1,91 @@
+"""Where each joint's axis lies in the base frame: the line a revolute joint turns about
+or a prismatic joint slides along.
+
+The 3D scene draws its joint markers on these lines; the Jacobian uses the same screws
+(:func:`robotconf.kinematics._jacobian.joint_screws`), so the picture and the velocities agree.
+"""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING, Any, NamedTuple
+
+import numpy as np
+
+from .._validation import check_joint_values
+from ._jacobian import joint_screws, pose_components
+
+if TYPE_CHECKING:
+    from ._robot import Robot
+
+__all__ = ["JointAxes", "joint_axes"]
+
+
+class JointAxes(NamedTuple):
+    """Joint axes of a robot at one configuration or along a trajectory.
+
+    Attributes
+    ----------
+    joints : tuple of str or None, length n
+        ``"R"`` (revolute), ``"P"`` (prismatic) or ``None`` (no joint: a ``none`` or
+        ``fixed`` module, or a module after the active count).
+    point : ndarray, shape (n, 3) or (T, n, 3)
+        A point on each axis (length units): where the joint sits before it moves. NaN
+        for links without a joint.
+    direction : ndarray, shape (n, 3) or (T, n, 3)
+        Unit vector along each axis. NaN for links without a joint.
+    """
+
+    joints: tuple[str | None, ...]
+    point: np.ndarray
+    direction: np.ndarray
+
+
+def joint_axes(robot: Robot, q: Any = None) -> JointAxes:
+    """The axis of every joint in the base frame.
+
+    For a module, the joint sits at its frame origin before it moves (the offset ``a`` is
+    applied first, paper §2.3); for a standard DH row it is the previous frame's z axis;
+    for a modified DH row, its own z axis.
+
+    Parameters
+    ----------
+    robot : Robot
+    q : array-like, shape (n,) or (T, n), optional
+        Coordinates (radians for rotations, length for translations); default: the
+        modules' own ``q``.
+
+    Returns
+    -------
+    JointAxes
+
+    Examples
+    --------
+    The paper's robot: module 2 turns about y through (0, 0, 20).
+
+    >>> import robotconf as rc
+    >>> robot = rc.Robot(
+    ...     [rc.Module("Rz"), rc.Module("Ry", a=(0, 0, 20)), rc.Module("Ry", a=(30, 0, 0))],
+    ...     end_effector=(40, 0, 0),
+    ... )
+    >>> axes = rc.joint_axes(robot)
+    >>> axes.joints
+    ('R', 'R', 'R')
+    >>> axes.point[1], axes.direction[1]
+    (array([ 0.,  0., 20.]), array([0., 1., 0.]))
+    """
+    values, batched = check_joint_values(
+        robot.q if q is None else q, robot.n, robot.coordinate_names
+    )
+    screws = joint_screws(robot, pose_components(robot, values))
+    samples = values.shape[0]
+    point = np.full((samples, robot.n, 3), np.nan)
+    direction = np.full((samples, robot.n, 3), np.nan)
+    for i, screw in enumerate(screws):
+        if screw.joint is None or screw.axis is None or screw.point is None:
+            continue
+        point[:, i] = np.broadcast_to(screw.point, (3, samples)).T
+        direction[:, i] = np.broadcast_to(screw.axis, (3, samples)).T
+    joints = tuple(screw.joint for screw in screws)
+    if batched:
+        return JointAxes(joints, point, direction)
+    return JointAxes(joints, point[0], direction[0])

@@ -1,0 +1,51 @@
+"""Motion: drive coordinates with signals and get the DVA of every frame and the EE.
+
+Simulation
+    :func:`simulate`, :class:`Motion`, :data:`METHODS`
+Displacement, velocity, acceleration (numpy)
+    :data:`QUANTITIES`, :func:`analytic_dva`, :func:`numeric_dva`,
+    :func:`first_derivative`, :func:`second_derivative`
+Tables and statistics (pandas, imported on use)
+    :func:`motion_table`, :func:`motion_stats`, :func:`compare_motions`, :data:`STATS`
+
+>>> from robotconf.kinematics import Module, Robot
+>>> from robotconf.signals import Ramp
+>>> motion = simulate(Robot([Module("Tx")]), {"q1": Ramp(slope=2.0)}, t_end=1.0, dt=0.5)
+>>> motion.position[:, -1, 0]
+array([0., 1., 2.])
+"""
+
+from ._dva import QUANTITIES, analytic_dva, first_derivative, numeric_dva, second_derivative
+from ._motion import Motion
+from ._simulation import MAX_SAMPLE_POINTS, METHODS, simulate
+from ._table import (
+    EXCEL_MAX_ROWS,
+    STATS,
+    compare_motions,
+    motion_stats,
+    motion_table,
+    motion_to_csv,
+    motion_to_excel,
+)
+
+__all__ = [
+    # simulation
+    "simulate",
+    "Motion",
+    "METHODS",
+    "MAX_SAMPLE_POINTS",
+    # DVA
+    "QUANTITIES",
+    "analytic_dva",
+    "numeric_dva",
+    "first_derivative",
+    "second_derivative",
+    # tables
+    "motion_table",
+    "motion_stats",
+    "compare_motions",
+    "motion_to_csv",
+    "motion_to_excel",
+    "STATS",
+    "EXCEL_MAX_ROWS",
+]

@@ -1,0 +1,227 @@
+"""pandas views of a :class:`~robotconf.motion._simulation.Motion`: table, statistics, export.
+
+Every number here comes from the motion's core arrays; pandas only labels them, so the
+module imports pandas inside its functions and ``import robotconf`` stays numpy-only.
+"""
+
+from __future__ import annotations
+
+import importlib.util
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from .._errors import InvalidInputError
+from ._dva import QUANTITIES
+
+if TYPE_CHECKING:
+    import pandas as pd
+
+    from ._simulation import Motion
+
+__all__ = ["motion_table", "motion_stats", "compare_motions", "motion_to_csv", "motion_to_excel"]
+
+#: Name of the time index.
+TIME_LABEL = "time (s)"
+#: Columns of :func:`motion_stats`, in Simulink Scope's order.
+STATS = ("max", "t_max", "min", "t_min", "peak_to_peak", "mean", "median", "rms")
+#: Excel's row limit (one header row per column level is added).
+EXCEL_MAX_ROWS = 1_048_576
+
+
+def _columns(motion: Motion) -> pd.MultiIndex:
+    import pandas as pd
+
+    return pd.MultiIndex.from_product(
+        [list(motion.points), list(QUANTITIES), ["x", "y", "z"]],
+        names=["point", "quantity", "axis"],
+    )
+
+
+def motion_table(motion: Motion) -> pd.DataFrame:
+    """All series of a motion as a DataFrame.
+
+    Parameters
+    ----------
+    motion : Motion
+
+    Returns
+    -------
+    pandas.DataFrame, shape (T, 15 · (n + 1))
+        Index: sample times, named ``"time (s)"``. Columns: MultiIndex
+        ``(point, quantity, axis)`` with point in ``M1 … Mn, EE``, quantity in
+        ``position, displacement, velocity, acceleration, angular_velocity`` and axis in
+        ``x, y, z``. Units: length, length, length/s, length/s², rad/s.
+
+    Examples
+    --------
+    >>> import robotconf as rc
+    >>> from robotconf.motion._simulation import simulate
+    >>> from robotconf.signals import Ramp
+    >>> robot = rc.Robot([rc.Module("Tz")], end_effector=(1, 0, 0))
+    >>> table = simulate(robot, {"q1": Ramp(slope=2.0)}, t_end=1.0, dt=0.5).table
+    >>> table[("EE", "velocity", "z")].tolist()
+    [2.0, 2.0, 2.0]
+    >>> table.shape
+    (3, 30)
+    """
+    import pandas as pd
+
+    index = pd.Index(motion.t, name=TIME_LABEL)
+    # The (C, T) block transposed is exactly pandas' internal layout: one copy, no shuffle.
+    return pd.DataFrame(motion.columns().T, index=index, columns=_columns(motion), copy=True)
+
+
+def motion_stats(motion: Motion) -> pd.DataFrame:
+    """Simulink Scope "Signal Statistics" for every column of :func:`motion_table`.
+
+    Parameters
+    ----------
+    motion : Motion
+
+    Returns
+    -------
+    pandas.DataFrame
+        One row per column ``(point, quantity, axis)``; columns ``max``, ``t_max`` (time
+        of the first maximum, s), ``min``, ``t_min``, ``peak_to_peak`` (max − min),
+        ``mean``, ``median`` and ``rms`` (root mean square ``sqrt(mean(x²))``), each over
+        all samples.
+
+    Examples
+    --------
+    >>> import robotconf as rc
+    >>> from robotconf.motion._simulation import simulate
+    >>> from robotconf.signals import RepeatingSequence
+    >>> robot = rc.Robot([rc.Module("Tx")])
+    >>> stats = simulate(robot, {"q1": RepeatingSequence()}, t_end=3.0, dt=0.5).stats()
+    >>> stats.loc[("M1", "position", "x")].tolist()
+    [1.5, 1.5, 0.0, 0.0, 1.5, 0.6428571428571429, 0.5, 0.823754471047914]
+    """
+    import pandas as pd
+
+    data = motion.columns()
+    t = motion.t
+    high, low = data.argmax(axis=1), data.argmin(axis=1)
+    rows = np.arange(data.shape[0])
+    maxima, minima = data[rows, high], data[rows, low]
+    values = {
+        "max": maxima,
+        "t_max": t[high],
+        "min": minima,
+        "t_min": t[low],
+        "peak_to_peak": maxima - minima,
+        "mean": data.mean(axis=1),
+        "median": np.median(data, axis=1),
+        "rms": np.sqrt(np.einsum("ct,ct->c", data, data) / data.shape[1]),
+    }
+    return pd.DataFrame(values, index=_columns(motion), columns=list(STATS))
+
+
+def compare_motions(first: Motion, second: Motion) -> pd.DataFrame:
+    """Column-wise difference ``first.table − second.table``, e.g. analytic − numeric.
+
+    Parameters
+    ----------
+    first, second : Motion
+        Simulations of the same robot on the same time grid.
+
+    Returns
+    -------
+    pandas.DataFrame
+        Same index and columns as :func:`motion_table`. ``.abs().max()`` gives the largest
+        disagreement per column.
+
+    Raises
+    ------
+    InvalidInputError
+        If the robots or time grids differ.
+
+    Examples
+    --------
+    >>> import robotconf as rc
+    >>> from robotconf.motion._simulation import simulate
+    >>> from robotconf.signals import Sine
+    >>> robot = rc.Robot([rc.Module("Rz")], end_effector=(1, 0, 0))
+    >>> exact = simulate(robot, {"q1": Sine()}, t_end=1.0, dt=1e-3)
+    >>> approx = simulate(robot, {"q1": Sine()}, t_end=1.0, dt=1e-3, method="numeric")
+    >>> bool(compare_motions(exact, approx).abs().max().max() < 1e-3 * 4 * np.pi**2)
+    True
+    """
+    from ._simulation import Motion
+
+    if not isinstance(second, Motion):
+        raise InvalidInputError("other", second, "a Motion from simulate()")
+    if first.robot != second.robot:
+        raise InvalidInputError(
+            "other", second, "a motion of the same robot", problem="different robots:"
+        )
+    if first.t.shape != second.t.shape or not np.array_equal(first.t, second.t):
+        raise InvalidInputError(
+            "other",
+            second,
+            "a motion with the same t0, t_end and dt",
+            problem="different time grids:",
+        )
+    return first.table - second.table
+
+
+def _flat(table: pd.DataFrame) -> pd.DataFrame:
+    flat = table.copy(deep=False)
+    flat.columns = ["_".join(column) for column in table.columns]
+    return flat
+
+
+def motion_to_csv(motion: Motion, path: Any, *, flat: bool = False, **kwargs: Any) -> None:
+    """Write the table as CSV.
+
+    Parameters
+    ----------
+    motion : Motion
+    path : str or path-like or file
+    flat : bool
+        ``False``: three header rows (point, quantity, axis); read back with
+        ``pandas.read_csv(path, header=[0, 1, 2], index_col=0)``. ``True``: one header row
+        with names such as ``EE_velocity_z`` (easier in a spreadsheet).
+    **kwargs
+        Passed to :meth:`pandas.DataFrame.to_csv`.
+    """
+    table = _flat(motion.table) if flat else motion.table
+    table.to_csv(path, **kwargs)
+
+
+def motion_to_excel(motion: Motion, path: Any, *, flat: bool = False, **kwargs: Any) -> None:
+    """Write the table to an .xlsx workbook (needs the ``openpyxl`` package).
+
+    Parameters
+    ----------
+    motion : Motion
+    path : str or path-like
+    flat : bool
+        As for :func:`motion_to_csv`.
+    **kwargs
+        Passed to :meth:`pandas.DataFrame.to_excel`.
+
+    Raises
+    ------
+    ModuleNotFoundError
+        If openpyxl is not installed; the message says how to install it.
+    InvalidInputError
+        If the motion has more rows than an Excel sheet holds.
+    """
+    if importlib.util.find_spec("openpyxl") is None:
+        raise ModuleNotFoundError(
+            "Motion.to_excel needs the 'openpyxl' package to write .xlsx files: "
+            "run `pip install openpyxl` (or use Motion.to_csv)",
+            name="openpyxl",
+        )
+    rows = motion.t.size + (1 if flat else 4)
+    if rows > EXCEL_MAX_ROWS:
+        raise InvalidInputError(
+            "path",
+            str(path),
+            f"at most {EXCEL_MAX_ROWS} rows per Excel sheet: increase dt, shorten the run, "
+            "or use to_csv",
+            problem=f"{motion.t.size} samples do not fit in a sheet:",
+        )
+    table = _flat(motion.table) if flat else motion.table
+    table.to_excel(path, **kwargs)

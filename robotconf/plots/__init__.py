@@ -1,0 +1,32 @@
+"""Plots: matplotlib figures of a robot, a motion, a workspace and the coordinates.
+
+Presentation: every number drawn comes from the core. matplotlib is imported inside the
+functions, and each figure shows itself as a picture in a notebook.
+
+:func:`plot_robot` (the paper's Figure 14), :func:`plot_motion` (Figures 17–19),
+:func:`plot_coordinates` (Figure 16), :func:`plot_workspace`, :func:`new_figure`
+
+>>> from robotconf.kinematics import Module, Robot
+>>> fig = plot_robot(Robot([Module("Rz")], end_effector=(1, 0, 0)))
+>>> type(fig).__name__
+'Figure'
+"""
+
+from ._coordinates import plot_coordinates
+from ._figures import new_figure
+from ._motion import kink_note, plot_motion
+from ._robot import EE_COLOR, MODULE_COLOR, TRIAD_COLORS, plot_robot
+from ._workspace import PROJECTIONS, plot_workspace
+
+__all__ = [
+    "plot_robot",
+    "plot_motion",
+    "plot_coordinates",
+    "plot_workspace",
+    "new_figure",
+    "kink_note",
+    "MODULE_COLOR",
+    "EE_COLOR",
+    "TRIAD_COLORS",
+    "PROJECTIONS",
+]

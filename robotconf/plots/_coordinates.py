@@ -1,0 +1,54 @@
+"""The driven coordinates over time: the paper's Figure 16."""
+
+from __future__ import annotations
+
+from typing import TYPE_CHECKING
+
+from ._figures import new_figure
+
+if TYPE_CHECKING:
+    from matplotlib.figure import Figure
+
+    from ..motion import Motion
+
+__all__ = ["plot_coordinates"]
+
+
+def plot_coordinates(motion: Motion, length_unit: str = "length") -> Figure:
+    """q(t) of the driven coordinates (all when none is driven): the paper's Figure 16.
+
+    Parameters
+    ----------
+    motion : Motion
+    length_unit : str
+        Unit label of prismatic coordinates.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        One row per coordinate, sharing the time axis.
+
+    Examples
+    --------
+    >>> from robotconf.kinematics import Module, Robot
+    >>> from robotconf.motion import simulate
+    >>> from robotconf.signals import Ramp
+    >>> motion = simulate(Robot([Module("Rz"), Module("Tz")]), {"q2": Ramp()}, t_end=1.0)
+    >>> [ax.get_ylabel() for ax in plot_coordinates(motion, "mm").axes]
+    ['q2 [mm]']
+    """
+    robot = motion.robot
+    names = list(motion.signals) or list(robot.coordinate_names)
+    fig = new_figure((9.0, 2.2 + 1.6 * len(names)))
+    axes = fig.subplots(len(names), 1, sharex=True, squeeze=False)[:, 0]
+    for ax, name in zip(axes, names, strict=True):
+        i = robot.index(name)
+        unit = robot.modules[i].unit
+        unit = length_unit if unit == "length" else unit
+        ax.plot(motion.t, motion.q[:, i], lw=1.4)
+        ax.set_ylabel(f"{name} [{unit}]" if unit else name)
+        signal = motion.signals.get(name)
+        ax.set_title(f"{name}(t) = {signal!r}" if signal is not None else f"{name}(t)")
+        ax.grid(True, alpha=0.3)
+    axes[-1].set_xlabel("time (s)")
+    return fig

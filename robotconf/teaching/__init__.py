@@ -1,0 +1,75 @@
+"""Teaching: step-by-step derivations, symbolic matrices and the homework checker.
+
+sympy is imported inside the functions that need it, so importing this folder stays
+numpy-only.
+
+Derivations
+    :func:`derivation`, :class:`Derivation`, :class:`DerivationStep`, :func:`format_number`
+Symbolic chain (an independent second implementation of the matrices, in sympy)
+    :func:`symbolic_chain`, :class:`SymbolicChain`, :func:`module_matrix`,
+    :func:`elementary_matrix`, :func:`dh_factors`, :func:`exact_number`
+Expected answers and the checker
+    :func:`expected_matrix`, :class:`ExpectedMatrix`, :func:`check_matrix`,
+    :func:`assert_matrix`, :class:`MatrixCheck`
+Student text (a whitelist parser: nothing is evaluated)
+    :func:`parse_expression`, :func:`parse_matrix`, :class:`ParserLimits`
+
+>>> format_number(0.30000000000000004)
+'0.3'
+"""
+
+from ._check_result import MatrixCheck
+from ._checker import assert_matrix, check_matrix
+from ._derivation import Derivation, derivation
+from ._expected import ExpectedMatrix, as_expected, evaluate, expected_matrix, sample_points
+from ._formatting import format_number, latex_text, matrix_grid, matrix_latex
+from ._mistakes import Candidate, generic_candidates, is_rotation_like
+from ._step import DerivationStep
+from ._student_parser import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
+from ._symbolic import (
+    SymbolicChain,
+    dh_factors,
+    elementary_matrix,
+    exact_number,
+    link_factors,
+    module_matrix,
+    simplify_matrix,
+    symbolic_chain,
+)
+
+__all__ = [
+    # derivations
+    "derivation",
+    "Derivation",
+    "DerivationStep",
+    "format_number",
+    "latex_text",
+    "matrix_grid",
+    "matrix_latex",
+    # symbolic chain
+    "symbolic_chain",
+    "SymbolicChain",
+    "module_matrix",
+    "elementary_matrix",
+    "dh_factors",
+    "link_factors",
+    "simplify_matrix",
+    "exact_number",
+    # expected answers and the checker
+    "expected_matrix",
+    "ExpectedMatrix",
+    "as_expected",
+    "evaluate",
+    "sample_points",
+    "check_matrix",
+    "assert_matrix",
+    "MatrixCheck",
+    "Candidate",
+    "generic_candidates",
+    "is_rotation_like",
+    # student text
+    "parse_expression",
+    "parse_matrix",
+    "ParserLimits",
+    "DEFAULT_SYMBOL_NAMES",
+]

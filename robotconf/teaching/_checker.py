@@ -1,0 +1,349 @@
+"""The homework checker: compare a student's matrix with the expected one and say why not.
+
+Two entries are equal when exact simplification proves their difference zero, or when
+they agree at every one of ``samples`` random points (the symbols get random values)
+within ``tol``. Wrong entries are then explained by rebuilding the usual mistakes (see
+:mod:`robotconf.teaching._mistakes`) and looking for the one the student's answer matches.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import TYPE_CHECKING, Any
+
+import numpy as np
+
+from .._errors import InvalidInputError
+from ._check_result import MatrixCheck
+from ._expected import ExpectedMatrix, as_expected, evaluate, sample_points
+from ._hints import NO_ANSWER, close, entries_text, entry_hints, explain, shape_hint
+from ._mistakes import context_candidates, generic_candidates
+from ._student_parser import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
+
+if TYPE_CHECKING:  # pragma: no cover
+    import sympy
+
+__all__ = ["MatrixCheck", "check_matrix", "assert_matrix"]
+
+_STUDENT_ALLOWED = "a matrix: nested lists, a numpy array, a sympy Matrix or text '[[…], …]'"
+
+
+# -- student input ----------------------------------------------------------------------
+
+
+def _student_entry(value: Any, table: dict[str, Any], limits: ParserLimits, where: str) -> Any:
+    import sympy
+
+    from ._symbolic import exact_number
+
+    if isinstance(value, str):
+        return parse_expression(value, table.values(), limits)
+    if isinstance(value, (bool, np.bool_)):
+        raise InvalidInputError(where, value, "a number or a formula", problem="a boolean:")
+    if isinstance(value, sympy.Basic):
+        if not isinstance(value, sympy.Expr):
+            raise InvalidInputError(where, value, "a number or a formula", problem="not a formula:")
+        return value
+    if isinstance(value, (int, np.integer)):
+        return sympy.Integer(int(value))
+    if isinstance(value, (float, np.floating)):
+        if not np.isfinite(value):
+            raise InvalidInputError(where, value, "a finite number", problem="must be finite, got")
+        return exact_number(float(value))
+    raise InvalidInputError(where, value, "a number or a formula", problem="not a number:")
+
+
+def _parse_text(text: str, table: dict[str, Any], limits: ParserLimits, scalar: bool) -> Any:
+    """Parse a typed answer; for a 1×1 answer a bare formula such as ``2*sin(q2)`` is fine."""
+    import sympy
+
+    head = text.lstrip()
+    if scalar and not head.startswith(("[", "Matrix")):
+        if not head.startswith("("):
+            return sympy.Matrix([[parse_expression(text, table.values(), limits)]])
+        try:  # "(2*sin(q2))" is a formula, "((1,),)" a matrix
+            return sympy.Matrix([[parse_expression(text, table.values(), limits)]])
+        except InvalidInputError:
+            pass
+    return parse_matrix(text, table.values(), limits)
+
+
+def _student_matrix(
+    student: Any, table: dict[str, Any], limits: ParserLimits, scalar: bool = False
+) -> sympy.Matrix:
+    import sympy
+
+    if isinstance(student, np.ndarray) and student.ndim == 0:
+        student = student.item()
+    if isinstance(student, str):
+        matrix = _parse_text(student, table, limits, scalar)
+    elif isinstance(student, sympy.MatrixBase):
+        matrix = sympy.Matrix(student)
+    elif isinstance(student, bytes):
+        raise InvalidInputError("student", student, _STUDENT_ALLOWED, problem="bytes, not text:")
+    elif scalar and isinstance(student, (int, float, np.number, sympy.Expr)):
+        matrix = sympy.Matrix([[_student_entry(student, table, limits, "student")]])
+    else:
+        rows = student.tolist() if isinstance(student, np.ndarray) else student
+        if not isinstance(rows, (list, tuple)) or not rows:
+            raise InvalidInputError("student", student, _STUDENT_ALLOWED, problem="not a matrix:")
+        if all(not isinstance(r, (list, tuple, np.ndarray)) for r in rows):
+            rows = [[r] for r in rows]
+        elif not all(isinstance(r, (list, tuple, np.ndarray)) for r in rows):
+            raise InvalidInputError(
+                "student", student, _STUDENT_ALLOWED, problem="mixes rows and single entries:"
+            )
+        widths = {len(r) for r in rows}
+        if len(widths) != 1 or 0 in widths:
+            raise InvalidInputError(
+                "student", student, _STUDENT_ALLOWED, problem=f"rows of lengths {sorted(widths)}:"
+            )
+        if len(rows) * len(rows[0]) > limits.max_entries:
+            raise InvalidInputError(
+                "student", student, _STUDENT_ALLOWED, problem="too many entries:"
+            )
+        matrix = sympy.Matrix(
+            [
+                [_student_entry(v, table, limits, f"student[{r}][{c}]") for c, v in enumerate(row)]
+                for r, row in enumerate(rows)
+            ]
+        )
+    # Same-named symbols are the same symbol, whatever assumptions the student used.
+    renames = {s: table[s.name] for s in matrix.free_symbols if s.name in table}
+    return matrix.xreplace(renames) if renames else matrix
+
+
+def _symbol_table(expected: ExpectedMatrix, symbols: Iterable[Any] | None) -> dict[str, Any]:
+    import sympy
+
+    table = {s.name: s for s in expected.matrix.free_symbols if isinstance(s, sympy.Symbol)}
+    names = list(expected.symbol_names())
+    if expected.robot is None:
+        names += list(DEFAULT_SYMBOL_NAMES)
+    for item in symbols or ():
+        names.append(item.name if isinstance(item, sympy.Symbol) else item)
+    for name in names:
+        if not isinstance(name, str) or not name.isidentifier():
+            raise InvalidInputError("symbols", name, "names such as 'q1' or 'l2'")
+        table.setdefault(name, sympy.Symbol(name, real=True))
+    return table
+
+
+def _fit_shapes(student: Any, expected: Any) -> Any:
+    """Vectors: accept a row for a column and (x, y, z) for a homogeneous (x, y, z, 1)."""
+    import sympy
+
+    if expected.cols != 1 or min(student.shape) != 1:
+        return student
+    column = student.reshape(len(student), 1)
+    if expected.rows == 4 and column.rows == 3 and expected[3, 0] == 1:
+        column = column.col_join(sympy.Matrix([[1]]))
+    return column
+
+
+def _compare(
+    matrix: Any, reference: ExpectedMatrix, tol: float, samples: int, seed: int
+) -> tuple[dict[str, np.ndarray], int, np.ndarray, np.ndarray, set[tuple[int, int]]]:
+    """Sample both matrices (same shape) and find the wrong entries.
+
+    Returns the sample points, their number K, the student's and the expected values
+    (shape (K, rows, cols)) and the wrong entries (0-based).
+    """
+    expected_m = reference.matrix
+    names = sorted(
+        {s.name for s in matrix.free_symbols | expected_m.free_symbols}
+        | set(reference.robot.coordinate_names if reference.robot is not None else ())
+    )
+    k = int(samples) if names else 1
+    env = sample_points(names, k, seed)
+    s_values = _values(matrix, env, k)
+    e_values = _values(expected_m, env, k)
+    right = close(s_values, e_values, tol)
+    wrong = set()
+    for r in range(matrix.rows):
+        for c in range(matrix.cols):
+            if right[r, c]:
+                continue
+            undefined = np.isnan(s_values[:, r, c]).any() or np.isnan(e_values[:, r, c]).any()
+            if not _proven_equal(matrix[r, c], expected_m[r, c], full=bool(undefined)):
+                wrong.add((r, c))
+    return env, k, s_values, e_values, wrong
+
+
+# -- comparison -----------------------------------------------------------------------
+
+
+def _values(matrix: Any, env: dict[str, np.ndarray], k: int) -> np.ndarray:
+    out = np.empty((k, matrix.rows, matrix.cols))
+    for r in range(matrix.rows):
+        for c in range(matrix.cols):
+            out[:, r, c] = evaluate(matrix[r, c], env, k)
+    return out
+
+
+def _proven_equal(a: Any, b: Any, full: bool) -> bool:
+    import sympy
+
+    difference = a - b
+    if difference == 0:
+        return True
+    if sympy.count_ops(difference) > 300:
+        return False
+    try:
+        if sympy.expand(sympy.expand_trig(difference)) == 0:
+            return True
+        return bool(full and sympy.simplify(difference) == 0)
+    except (TypeError, ValueError, RecursionError):  # pragma: no cover - sympy internals
+        return False
+
+
+def check_matrix(
+    student: Any,
+    expected: Any,
+    *,
+    tol: float = 1e-3,
+    samples: int = 8,
+    seed: int = 0,
+    symbols: Iterable[Any] | None = None,
+    reveal: bool = True,
+    limits: ParserLimits | None = None,
+) -> MatrixCheck:
+    """Check a student's matrix against the expected one and explain the mistakes.
+
+    Parameters
+    ----------
+    student : str, nested lists, ndarray, sympy.Matrix or None, shape (r, c)
+        Text such as ``"[[cos(q1), -sin(q1), 0, 0], …]"`` is parsed by a whitelist
+        parser (never evaluated); list entries may be numbers, sympy expressions or text.
+        A vector may be given as a row or a column, and ``(x, y, z)`` for ``p_EE``.
+        When a 1×1 matrix is expected, a plain number or formula (``"2*sin(q2)"``) will
+        do. ``None`` (an exercise not answered yet) fails with a hint saying so.
+    expected : ExpectedMatrix, DerivationStep, sympy.Matrix, array-like or scalar
+        With context (``expected_matrix(robot, "M2")`` or ``derivation(...)["M2"]``) the
+        hints name modules and recognise order, convention, offset and unit mistakes; a
+        bare matrix gets context-free hints only (rotation wording only when it is a
+        rotation or a homogeneous transform). A scalar is a 1×1 matrix.
+    tol : float
+        An entry is right when ``|student − expected| ≤ tol·max(1, |expected|)`` at every
+        sample point (numbers rounded to about 3 significant decimals pass).
+    samples : int
+        Random points at which symbolic entries are compared (K ≥ 1).
+    seed : int
+        Seed of those points (results are reproducible).
+    symbols : iterable of str or sympy.Symbol, optional
+        Extra names the student may use.
+    reveal : bool
+        Whether hints may quote the expected entries.
+    limits : ParserLimits, optional
+        Caps for parsing text.
+
+    Returns
+    -------
+    MatrixCheck
+
+    Raises
+    ------
+    InvalidInputError
+        For malformed student input (ragged rows, text outside the whitelist, NaN) or a
+        bad ``tol``/``samples``.
+
+    Examples
+    --------
+    >>> from robotconf import Module, Robot
+    >>> from robotconf.teaching._expected import expected_matrix
+    >>> robot = Robot([Module("Rz"), Module("Ry", a=(0, 0, 20))])
+    >>> wrong = "[[cos(q2), 0, -sin(q2), 0], [0, 1, 0, 0], [sin(q2), 0, cos(q2), 20], [0, 0, 0, 1]]"
+    >>> result = check_matrix(wrong, expected_matrix(robot, "A2"))
+    >>> result.ok, result.wrong_entries
+    (False, [(0, 2), (2, 0)])
+    >>> print(result.hints[0])  # doctest: +ELLIPSIS
+    The sine terms of A2 (module M2, Ry with a = (0, 0, 20)) have the wrong sign, ...
+    >>> check_matrix([[1, 0], [0, 1]], np.eye(2)).ok
+    True
+    >>> check_matrix("1/2", 0.5).ok  # a 1×1 answer needs no brackets
+    True
+    >>> check_matrix(None, np.eye(2)).hints
+    ['No answer yet: replace None with your matrix.']
+    """
+    if isinstance(tol, bool) or not isinstance(tol, (int, float)) or not 0 <= tol < 1:
+        raise InvalidInputError("tol", tol, "a number from 0 to 1 (relative tolerance)")
+    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 1:
+        raise InvalidInputError("samples", samples, "an integer ≥ 1")
+    limits = limits or ParserLimits()
+    reference = as_expected(expected)
+    if student is None:  # the exercise's placeholder: not answered yet
+        return MatrixCheck(False, [], [NO_ANSWER], ["no_answer"], None, reference, reveal)
+    table = _symbol_table(reference, symbols)
+    expected_m = reference.matrix
+    scalar = expected_m.shape == (1, 1)
+    matrix = _fit_shapes(_student_matrix(student, table, limits, scalar), expected_m)
+    if matrix.shape != expected_m.shape:
+        transposed_wrong = None
+        if matrix.shape == expected_m.T.shape:  # only a non-square matrix gets here
+            transposed_wrong = _compare(matrix.T, reference, tol, samples, seed)[-1]
+        hint = shape_hint(matrix.shape, expected_m, transposed_wrong)
+        code = "shape" if transposed_wrong is None else "transposed_matrix"
+        return MatrixCheck(False, [], [hint], [code], matrix, reference, reveal)
+    env, k, s_values, e_values, wrong = _compare(matrix, reference, tol, samples, seed)
+    if not wrong:
+        return MatrixCheck(True, [], [], [], matrix, reference, reveal)
+    candidates = context_candidates(reference, env, k) + generic_candidates(e_values)
+    full, partial = explain(candidates, wrong, s_values, e_values, tol)
+    hints: list[str] = []
+    codes: list[str] = []
+    for candidate in full[:3]:
+        if candidate.message not in hints:
+            hints.append(candidate.message)
+            codes.append(candidate.code)
+    explained = set(wrong) if full else set()
+    if not full:
+        for candidate, entries in partial[:1]:  # the best one; more would be guesswork
+            hints.append(f"{candidate.message} (entries {entries_text(entries)})")
+            codes.append(candidate.code)
+            explained |= entries
+    more, more_codes = entry_hints(
+        wrong - explained, matrix, expected_m, s_values, e_values, tol, reveal
+    )
+    hints += more
+    codes += more_codes
+    if full:
+        hints.append(f"Wrong entries: {entries_text(wrong)}.")
+    return MatrixCheck(False, sorted(wrong), hints, codes, matrix, reference, reveal)
+
+
+def assert_matrix(student: Any, expected: Any, **options: Any) -> MatrixCheck:
+    """Like :func:`check_matrix`, but raise ``AssertionError`` with the hints if wrong.
+
+    Made for nbgrader autograder cells: the failure message is what the student reads.
+
+    Parameters
+    ----------
+    student, expected
+        As in :func:`check_matrix`.
+    **options
+        ``tol``, ``samples``, ``seed``, ``symbols``, ``reveal``, ``limits``.
+
+    Returns
+    -------
+    MatrixCheck
+        When the matrix is right.
+
+    Raises
+    ------
+    AssertionError
+        When it is wrong or missing (``None``); the message lists the wrong entries and
+        the hints.
+
+    Examples
+    --------
+    >>> assert_matrix([[1, 2], [3, 4]], [[3, 4], [1, 2]])
+    Traceback (most recent call last):
+    ...
+    AssertionError: the matrix: 4 wrong entries.
+    - Rows 1 and 2 are swapped: check which coordinate (x, y, z) each row stands for.
+    - Wrong entries: (1,1), (1,2), (2,1), (2,2).
+    """
+    result = check_matrix(student, expected, **options)
+    if not result.ok:
+        raise AssertionError(str(result))
+    return result
