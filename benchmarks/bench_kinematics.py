@@ -11,7 +11,7 @@ Run ``python benchmarks/bench_kinematics.py`` (``--quick`` for a short run). For
 - the floor: numpy's own ``cos`` + ``sin`` per element;
 - peak memory of each call relative to its output (tracemalloc sees numpy's buffers).
 
-The issue's target, one core, pure numpy: ≤ 50 ns per sample-module for all frame poses.
+The target, one core, pure numpy: ≤ 50 ns per sample-module for all frame poses.
 """
 
 from __future__ import annotations

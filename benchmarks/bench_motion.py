@@ -1,6 +1,6 @@
 """Benchmark: analytic DVA of every frame of a 6-module robot plus the DataFrame.
 
-Target (issue 4): 10 s at 1 kHz (10 001 samples), analytic DVA for all frames and the EE
+Target: 10 s at 1 kHz (10 001 samples), analytic DVA for all frames and the EE
 plus ``Motion.table`` in ≤ 50 ms on one core. Also prints the scaling in T and in n and the
 ratio to a per-sample Python loop (the same code called once per sample).
 

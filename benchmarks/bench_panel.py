@@ -1,6 +1,6 @@
 """Responsiveness of the configurator: one q-slider change on a 6-module robot.
 
-Run: ``PYTHONPATH=. python benchmarks/bench_panel.py``. Target (issue 6): the new robot,
+Run: ``PYTHONPATH=. python benchmarks/bench_panel.py``. Target: the new robot,
 the matrices printout and the scene update together in ≤ 20 ms (p95, in-process).
 
 Measured: setting a q slider's value, which runs the whole callback chain (validate every

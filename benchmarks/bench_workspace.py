@@ -1,6 +1,6 @@
 """Benchmark: workspace of a 6-module robot, 10⁶ samples.
 
-Target (issue 8): 10⁶ samples of a 6-module robot in well under 5 s. Also prints the
+Target: 10⁶ samples of a 6-module robot in well under 5 s. Also prints the
 ratio to a simple reference in the same process: a Python loop calling
 ``robot.end_effector`` on one configuration at a time, timed on a subset and
 extrapolated to 10⁶ samples (running it in full would take minutes).

@@ -1,6 +1,6 @@
 """Shared fixtures and independent reference formulas for the tests.
 
-The references below are written out literally from DESIGN.md §1 (the paper's eq. 11–16),
+The references below are written out literally from docs/conventions.md, "Modules" (the paper's eq. 11–16),
 the paper's eq. 10 and Craig's modified-DH matrix, one sample at a time with plain 4×4
 products: deliberately the simplest possible code, independent of the numpy kernel.
 """
@@ -20,7 +20,7 @@ L1, L2, L3 = 20.0, 30.0, 40.0
 
 
 def reference_matrix(kind: str, q: float, a=(0.0, 0.0, 0.0)) -> np.ndarray:
-    """The DESIGN.md §1 table, entry by entry."""
+    """The module table of docs/conventions.md, entry by entry."""
     c, s = np.cos(q), np.sin(q)
     ax, ay, az = a
     table = {

@@ -1,4 +1,4 @@
-"""Modules: the seven movement types of DESIGN.md §1 plus ``fixed``."""
+"""Modules: the paper's seven movement types (docs/conventions.md) plus ``fixed``."""
 
 import numpy as np
 import pytest

@@ -22,7 +22,7 @@ def six_module_robot() -> rc.Robot:
     )
 
 
-def test_issue_example_shapes(paper_robot):
+def test_readme_example_shapes(paper_robot):
     assert paper_robot.transfer_matrices().shape == (3, 4, 4)
     assert paper_robot.frame_poses([0, 0, 0]).shape == (3, 4, 4)
     assert paper_robot.end_effector([0, 0, 0]).shape == (3,)

@@ -1,6 +1,6 @@
 """Displacement, velocity and acceleration (DVA) of every frame origin and the end-effector.
 
-Two named ways (DESIGN.md §2), both numpy only and vectorized over the ``T`` samples:
+Two named ways (docs/conventions.md, "Motion and DVA"), both numpy only and vectorized over the ``T`` samples:
 
 ``analytic``
     The classical outward recursion of rigid-body kinematics with the signals' exact
