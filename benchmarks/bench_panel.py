@@ -19,7 +19,7 @@ from collections.abc import Callable
 import numpy as np
 
 import robotconf as rc
-from robotconf.panel import Configurator, default_scene_factory
+from robotconf.panel import Configurator
 
 TARGET_P95_MS = 20.0
 SAMPLES = 400
@@ -54,7 +54,7 @@ def percentiles(run: Callable[[int], object], samples: int = SAMPLES) -> tuple[f
 
 def main() -> None:
     robot = six_module_robot()
-    panel = Configurator(robot, scene_factory=default_scene_factory())
+    panel = Configurator(robot)  # the real 3D scene, as in a notebook
     scene = type(panel.scene).__name__
     angles = np.linspace(-170.0, 170.0, 97)
     control = panel.modules.rows[2].q
