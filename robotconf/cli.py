@@ -12,8 +12,9 @@ import argparse
 import sys
 from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, NoReturn
+from typing import TYPE_CHECKING, NoReturn
 
+from .motion import METHODS, SimulationSettings
 from .signals import SPEC_HELP, parse_signal_spec
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -34,7 +35,8 @@ PRESET_DEMOS = {"paper": {"q3": "repeating"}}
 
 #: Simulink's default stop time (s); the paper's Figures 16–19 span 0 … 10 s.
 DEFAULT_T_END = 10.0
-DEFAULT_DT = 1e-3
+#: The core's default time step (s).
+DEFAULT_DT = SimulationSettings.dt
 DPI = 100
 
 DESCRIPTION = """\
@@ -78,7 +80,7 @@ def _parser() -> argparse.ArgumentParser:
     report.add_argument("--dt", type=float, help=f"time step in s (default {DEFAULT_DT:g})")
     report.add_argument(
         "--method",
-        choices=("analytic", "numeric"),
+        choices=METHODS,
         help="derivatives: analytic (exact, default) or numeric (finite differences)",
     )
     report.add_argument("--out", required=True, metavar="DIR", help="output folder (created)")
@@ -94,7 +96,9 @@ def _parser() -> argparse.ArgumentParser:
 # -- steps ------------------------------------------------------------------------------
 
 
-def _load(args: argparse.Namespace) -> tuple[Robot, dict[str, Signal], dict[str, Any], str]:
+def _load(
+    args: argparse.Namespace,
+) -> tuple[Robot, dict[str, Signal], SimulationSettings | None, str]:
     """Robot, its signals and simulation settings from ``--preset`` or a JSON file."""
     from .io import load_setup
     from .presets import preset
@@ -103,20 +107,24 @@ def _load(args: argparse.Namespace) -> tuple[Robot, dict[str, Signal], dict[str,
         robot = preset(args.preset)
         demo = PRESET_DEMOS.get(args.preset.strip().lower(), {})
         signals = {name: parse_signal_spec(f"{name}={spec}")[1] for name, spec in demo.items()}
-        return robot, signals, {}, f"preset {args.preset!r}"
+        return robot, signals, None, f"preset {args.preset!r}"
     path = Path(args.robot)
     if not path.is_file():
         raise BadInput(f"ROBOT.json: no such file: {str(path)!r}")
     setup = load_setup(path)
-    return setup.robot, dict(setup.signals or {}), dict(setup.simulation or {}), str(path)
+    return setup.robot, dict(setup.signals or {}), setup.settings, str(path)
 
 
-def _settings(args: argparse.Namespace, file_settings: dict[str, Any]) -> dict[str, Any]:
-    """t_end, dt, t0 and method: command line, else the file, else the defaults."""
-    t_end = args.t_end if args.t_end is not None else file_settings.get("t_end", DEFAULT_T_END)
-    dt = args.dt if args.dt is not None else file_settings.get("dt", DEFAULT_DT)
-    method = args.method or file_settings.get("method", "analytic")
-    return {"t_end": t_end, "dt": dt, "t0": file_settings.get("t0", 0.0), "method": method}
+def _settings(
+    args: argparse.Namespace, file_settings: SimulationSettings | None
+) -> SimulationSettings:
+    """t_end, dt, t0 and method: command line, else the file, else the defaults.
+
+    The combination is checked as a whole, with the core's limits and messages.
+    """
+    base = file_settings or SimulationSettings(DEFAULT_T_END, DEFAULT_DT)
+    given = {"t_end": args.t_end, "dt": args.dt, "method": args.method}
+    return base.with_changes(**{key: value for key, value in given.items() if value is not None})
 
 
 def _write_matrices(robot: Robot, out: Path, symbolic: bool) -> list[str]:
@@ -234,7 +242,7 @@ def _report(args: argparse.Namespace) -> int:
     settings = _settings(args, file_settings)
     total = 7 - args.no_scene
     say(f"[1/{total}] robot from {source}: {robot.name or 'Robot'}, {robot.n} modules")
-    motion = simulate(robot, signals, **settings)
+    motion = simulate(robot, signals, **settings.to_dict())
     say(
         f"[2/{total}] simulated {motion.t.size} samples ({motion.method}), signals: "
         + (", ".join(f"{k}={v!r}" for k, v in motion.signals.items()) or "none")

@@ -116,12 +116,40 @@ def test_setup_with_signals_and_simulation_round_trips():
     assert motion.t[-1] == pytest.approx(10.0)
 
 
+def test_setup_takes_simulation_settings_and_writes_all_four_keys():
+    from robotconf.motion import SimulationSettings
+
+    settings = SimulationSettings(t_end=2.0, dt=0.01, method="numeric")
+    setup = rc.Setup(rc.preset("paper"), {"q3": sg.Ramp()}, settings)
+    assert setup.simulation == {"t_end": 2.0, "dt": 0.01, "t0": 0.0, "method": "numeric"}
+    assert setup.settings == settings and setup.settings.samples == 201
+    assert rc.load_setup(setup.to_json()) == setup
+    text = rc.preset("paper").to_json(simulation=settings)
+    assert json.loads(text)["simulation"] == settings.to_dict()
+    assert rc.Setup(rc.preset("paper")).settings is None
+
+
+def test_setup_keeps_only_the_keys_given_and_normalizes_them():
+    setup = rc.Setup(rc.preset("paper"), {}, {"t_end": 3, "method": "Numeric"})
+    assert setup.simulation == {"t_end": 3.0, "method": "numeric"}
+    assert setup.simulate_kwargs() == {"t_end": 3.0, "method": "numeric"}
+    assert setup.settings.to_dict() == {"t_end": 3.0, "dt": 0.001, "t0": 0.0, "method": "numeric"}
+
+
+def test_signal_keys_resolve_like_robot_index():
+    robot = rc.preset("paper")
+    setup = rc.Setup(robot, {"M3": sg.Ramp(), 0: 0.5})
+    assert setup.signals == {"q3": sg.Ramp(), "q1": sg.Constant(0.5)}
+    with pytest.raises(InvalidInputError, match=r"signals\.Q1: q1 is given twice"):
+        rc.Setup(robot, {"q1": sg.Ramp(), "Q1": sg.Step()})
+
+
 def test_numbers_in_signals_mean_constants_and_keys_are_checked():
     setup = rc.Setup(rc.preset("paper"), {"Q2": 0.5})
     assert setup.signals == {"q2": sg.Constant(0.5)}
     with pytest.raises(
         InvalidInputError,
-        match=r"signals\.q4: unknown coordinate 'q4'; allowed: coordinate names q1…q3",
+        match=r"signals\.q4: unknown module 'q4'; allowed: an index 0 to 2, .*\(q1 to q3\)",
     ):
         rc.Setup(rc.preset("paper"), {"q4": sg.Ramp()})
     with pytest.raises(InvalidInputError, match=r"robot: invalid value 'paper'; allowed: a Robot"):
@@ -388,7 +416,7 @@ HOSTILE = {
     "signals not object": (_changed(_set(("signals",), [1])), r"signals: not: \[1\]"),
     "signal for unknown coordinate": (
         _changed(_set(("signals", "q9"), {"type": "Ramp"})),
-        r"signals\.q9: unknown coordinate 'q9'",
+        r"signals\.q9: unknown module 'q9'",
     ),
     "signal unknown type": (
         _changed(_set(("signals", "q3"), {"type": "Eval", "code": "1"})),
@@ -413,7 +441,7 @@ HOSTILE = {
     ),
     "simulation dt zero": (
         _changed(_set(("simulation", "dt"), 0)),
-        r"simulation\.dt: must be > 0: 0.0",
+        r"simulation\.dt: must be positive, got 0.0; allowed: a time step > 0",
     ),
     "simulation too many samples": (
         _changed(_set(("simulation", "dt"), 1e-9)),
@@ -421,11 +449,11 @@ HOSTILE = {
     ),
     "simulation t_end before t0": (
         _changed(_set(("simulation", "t0"), 5)),
-        r"simulation\.t_end: not after t0: 1.0",
+        r"simulation\.t_end: must be later than t0, got 1.0; allowed: a time after t0 = 5.0 s",
     ),
     "simulation unknown method": (
         _changed(_set(("simulation", "method"), "euler")),
-        r"simulation\.method: unknown value 'euler'; allowed: 'analytic' or 'numeric'",
+        r"simulation\.method: unknown method 'euler'; allowed: 'analytic' .* or 'numeric'",
     ),
     "simulation missing t_end": (
         _changed(_delete(("simulation", "t_end"))),
@@ -434,6 +462,34 @@ HOSTILE = {
     "simulation unknown key": (
         _changed(_set(("simulation", "solver"), "ode45")),
         r"simulation\.solver: unknown key",
+    ),
+    "simulation dt boolean": (
+        _changed(_set(("simulation", "dt"), True)),
+        r"simulation\.dt: expected a number, got a boolean: True",
+    ),
+    "simulation dt text": (
+        _changed(_set(("simulation", "dt"), "0.01")),
+        r"simulation\.dt: expected a number, got '0\.01'",
+    ),
+    "simulation t_end NaN": (
+        VALID.replace('"t_end": 1.0', '"t_end": NaN', 1),
+        r"simulation\.t_end: NaN is not allowed",
+    ),
+    "simulation method not text": (
+        _changed(_set(("simulation", "method"), 1)),
+        r"simulation\.method: expected text, got 1",
+    ),
+    "simulation not an object": (
+        _changed(_set(("simulation",), [1.0])),
+        r"simulation: expected an object, got \[1\.0\]",
+    ),
+    "simulation duplicate key": (
+        VALID.replace('"t_end": 1.0', '"t_end": 1.0, "t_end": 2.0', 1),
+        r"simulation\.t_end: duplicate key",
+    ),
+    "signal given twice": (
+        VALID.replace('"signals": {', '"signals": {"Q3": 1.0, ', 1),
+        r"signals\.q3: q3 is given twice: 'q3'; allowed: each coordinate once",
     ),
     "too large text": (
         VALID + " " * 1_000_000,

@@ -3,7 +3,6 @@
 from __future__ import annotations
 
 import sys
-import time
 
 import numpy as np
 import pytest
@@ -115,12 +114,22 @@ def test_result_is_read_only(planar_2r):
         ws.method = "grid"  # type: ignore[misc]
 
 
-def test_frame_columns_and_values(planar_2r):
+def test_table_columns_and_values(planar_2r):
     ws = workspace(planar_2r, 50, ranges=[FULL_TURN, FULL_TURN], seed=2)
-    frame = ws.frame()
-    assert list(frame.columns) == ["q1", "q2", "x", "y", "z"]
-    np.testing.assert_array_equal(frame[["x", "y", "z"]].to_numpy(), ws.points)
-    np.testing.assert_array_equal(frame[["q1", "q2"]].to_numpy(), ws.q)
+    table = ws.table
+    assert list(table.columns) == ["q1", "q2", "x", "y", "z"] and table.shape == (50, 5)
+    np.testing.assert_array_equal(table[["x", "y", "z"]].to_numpy(), ws.points)
+    np.testing.assert_array_equal(table[["q1", "q2"]].to_numpy(), ws.q)
+    assert ws.table is table  # built once
+
+
+def test_frame_is_a_deprecated_alias_of_table(planar_2r):
+    ws = workspace(planar_2r, 5, ranges=[FULL_TURN, FULL_TURN], seed=2)
+    with pytest.warns(
+        DeprecationWarning, match=r"Workspace\.frame\(\) is now the property Workspace\.table"
+    ):
+        frame = ws.frame()
+    assert frame.equals(ws.table)
 
 
 def test_plot_has_3d_and_three_labelled_projections(gantry):
@@ -199,14 +208,13 @@ def test_progress_auto_appears_for_long_runs_only(planar_2r, bars, monkeypatch):
     assert len(bars) == 1
 
 
-def test_a_million_samples_of_six_modules_is_fast():
+def test_a_million_samples_of_six_modules_stay_within_reach():
+    # Speed is measured in benchmarks/bench_workspace.py, not asserted here.
     robot = rc.Robot.from_dh(
         [(0, 0.089, 0, np.pi / 2, "R"), (0, 0, -0.425, 0, "R"), (0, 0, -0.392, 0, "R")]
         + [(0, 0.109, 0, np.pi / 2, "R"), (0, 0.095, 0, -np.pi / 2, "R"), (0, 0.082, 0, 0, "R")]
     )
-    start = time.perf_counter()
     ws = workspace(robot, 1_000_000, ranges=[FULL_TURN] * 6, seed=0, progress=False)
-    assert time.perf_counter() - start < 5.0  # the target; about 0.4 s here
     assert ws.points.shape == (1_000_000, 3)
     # Every point lies within the arm's reach: sum of link lengths and offsets.
     assert np.linalg.norm(ws.points - [0, 0, 0.089], axis=1).max() < 0.425 + 0.392 + 0.3
@@ -235,9 +243,9 @@ def test_a_million_samples_of_six_modules_is_fast():
         ({"ranges": "0 1"}, "ranges: text is not a number"),
         ({"ranges": [(0, 1), (0, 1), ("a", 1)]}, "ranges: not numeric"),
         ({"method": "sobol"}, "method: unknown method 'sobol'"),
-        ({"seed": -1}, "seed: negative"),
+        ({"seed": -1}, "seed: out of range: -1; allowed: None or an integer ≥ 0"),
         ({"seed": 1.5}, "seed: not an integer"),
-        ({"progress": "yes"}, "progress: not a flag"),
+        ({"progress": "yes"}, "progress: not True or False: 'yes'"),
         (
             {"samples": 3, "method": "grid"},
             r"samples: too few for a grid: 3; allowed: at least 2\^3",
@@ -302,14 +310,20 @@ def test_dict_ranges_override_by_coordinate_or_module_name():
     robot = rc.preset("paper")
     ws = workspace(robot, 500, {"q1": (0, 0), "M3": (0.5, 0.5)}, seed=1)
     assert np.all(ws.q[:, 0] == 0) and np.all(ws.q[:, 2] == 0.5)
+    by_index = workspace(robot, 500, {0: (0, 0), 2: (0.5, 0.5)}, seed=1)
+    np.testing.assert_array_equal(by_index.points, ws.points)
     np.testing.assert_array_equal(ws.ranges[1], robot.joint_limits()[1])
     assert np.all(ws.points[:, 1] == 0.0)  # q1 = 0: the arm stays in the xz plane
 
 
 def test_dict_ranges_errors():
     robot = rc.preset("paper")
-    with pytest.raises(rc.InvalidInputError, match="ranges: unknown coordinate 'q7'"):
+    with pytest.raises(
+        rc.InvalidInputError, match="ranges: unknown module 'q7'; allowed: an index"
+    ):
         workspace(robot, 10, {"q7": (0, 1)})
+    with pytest.raises(rc.InvalidInputError, match="ranges: out of range: 3; allowed: an index"):
+        workspace(robot, 10, {3: (0, 1)})
     with pytest.raises(rc.InvalidInputError, match=r"ranges\['q2'\]: expected 2 numbers"):
         workspace(robot, 10, {"q2": (0, 1, 2)})
     with pytest.raises(rc.InvalidInputError, match="ranges: q2 has lo > hi"):

@@ -15,10 +15,11 @@ import re
 from collections.abc import Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, Any
 
 from .._errors import InvalidInputError
 from .._validation import Rejected
+from ..motion import SimulationSettings
 from ..signals import Constant, Signal, signal_from_dict
 from ._schema import (
     FORMAT,
@@ -33,7 +34,7 @@ from ._schema import (
 if TYPE_CHECKING:
     from ..kinematics import Robot
 
-__all__ = ["Setup", "load", "load_setup", "FileMethods", "MAX_BYTES"]
+__all__ = ["Setup", "load", "load_setup", "parse_json", "MAX_BYTES"]
 
 #: Largest file (or text) robotconf reads: 1 MB. 64 links with a signal each take ~50 kB.
 MAX_BYTES = 1_000_000
@@ -107,7 +108,6 @@ def parse_json(text: Any, field: str = "file") -> Any:
 
 
 def _check_signals(value: Any, robot: Robot, path: str = "signals") -> dict[str, Signal]:
-    names = robot.coordinate_names
     if not isinstance(value, Mapping):
         raise InvalidInputError(path, value, "an object mapping q1… to signals", problem="not:")
     duplicates = getattr(value, "duplicates", ())
@@ -115,15 +115,13 @@ def _check_signals(value: Any, robot: Robot, path: str = "signals") -> dict[str,
         raise InvalidInputError(
             f"{path}.{duplicates[0]}", duplicates[0], "each key once", problem="duplicate key"
         )
+    names = robot.coordinate_names
     out: dict[str, Signal] = {}
     for key, signal in value.items():
-        label = key.strip().lower() if isinstance(key, str) else key
-        if label not in names:
+        label = names[robot.index(key, f"{path}.{key}")]
+        if label in out:
             raise InvalidInputError(
-                f"{path}.{key}",
-                key,
-                f"coordinate names {names[0]}…{names[-1]}",
-                problem="unknown coordinate",
+                f"{path}.{key}", key, "each coordinate once", problem=f"{label} is given twice:"
             )
         if isinstance(signal, Signal):
             out[label] = signal
@@ -132,6 +130,12 @@ def _check_signals(value: Any, robot: Robot, path: str = "signals") -> dict[str,
         else:
             out[label] = signal_from_dict(signal, f"{path}.{key}")
     return out
+
+
+def _simulation(value: Mapping[str, Any] | SimulationSettings) -> dict[str, Any]:
+    if isinstance(value, SimulationSettings):
+        return value.to_dict()
+    return check_simulation(value)
 
 
 @dataclass(frozen=True)
@@ -144,9 +148,11 @@ class Setup:
     signals : dict, optional
         Maps coordinate names (``"q3"``) to :class:`~robotconf.signals.Signal` objects (a
         number means a constant), as for :func:`~robotconf.simulate`.
-    simulation : dict, optional
-        ``t_end`` (required), ``dt``, ``t0`` (s) and ``method``; keys left out take
-        :func:`~robotconf.simulate`'s defaults.
+    simulation : dict or SimulationSettings, optional
+        ``t_end`` (required), ``dt``, ``t0`` (s) and ``method``, checked by
+        :class:`~robotconf.motion.SimulationSettings`. Kept as a dict of the keys given
+        (all four for a SimulationSettings), so a file is written back as it was read;
+        keys left out take the defaults. :attr:`settings` gives the settings object.
 
     Examples
     --------
@@ -156,11 +162,13 @@ class Setup:
     True
     >>> setup.simulate_kwargs()
     {'t_end': 2.0}
+    >>> setup.settings.samples
+    2001
     """
 
     robot: Robot
     signals: Mapping[str, Signal] = field(default_factory=dict)
-    simulation: Mapping[str, Any] | None = None
+    simulation: Mapping[str, Any] | SimulationSettings | None = None
 
     def __post_init__(self) -> None:
         from ..kinematics import Robot  # local: _robot imports this module
@@ -169,11 +177,17 @@ class Setup:
             raise InvalidInputError("robot", self.robot, "a Robot")
         object.__setattr__(self, "signals", _check_signals(self.signals or {}, self.robot))
         if self.simulation is not None:
-            object.__setattr__(self, "simulation", check_simulation(self.simulation))
+            object.__setattr__(self, "simulation", _simulation(self.simulation))
+
+    @property
+    def settings(self) -> SimulationSettings | None:
+        """The simulation settings with defaults filled in, or ``None`` if there are none."""
+        given = self.simulate_kwargs()
+        return SimulationSettings(**given) if given else None
 
     def simulate_kwargs(self) -> dict[str, Any]:
-        """The simulation settings as keyword arguments of :func:`~robotconf.simulate`."""
-        return dict(self.simulation or {})
+        """The simulation settings given, as keyword arguments of :func:`~robotconf.simulate`."""
+        return {} if self.simulation is None else _simulation(self.simulation)
 
     def to_dict(self) -> dict[str, Any]:
         """The file's content as plain data (see docs/file-format.md)."""
@@ -185,7 +199,7 @@ class Setup:
         if self.signals:
             data["signals"] = {key: s.to_dict() for key, s in self.signals.items()}
         if self.simulation is not None:
-            data["simulation"] = dict(self.simulation)
+            data["simulation"] = self.simulate_kwargs()
         return data
 
     def to_json(self, indent: int | None = 2) -> str:
@@ -224,9 +238,7 @@ class Setup:
         robot = robot_from_dict(data["robot"])
         signals = _check_signals(data.get("signals", {}), robot)
         simulation = data.get("simulation")
-        if simulation is not None:
-            simulation = check_simulation(simulation)
-        return cls(robot, signals, simulation)
+        return cls(robot, signals, None if simulation is None else check_simulation(simulation))
 
     @classmethod
     def from_json(cls, text: str) -> Setup:
@@ -326,76 +338,3 @@ def load(path: str | os.PathLike[str]) -> Robot:
     array([70.,  0., 20.])
     """
     return Setup.from_json(_read(path)).robot
-
-
-class FileMethods:
-    """The file methods of :class:`~robotconf.Robot` (kept here to keep it short)."""
-
-    __slots__ = ()
-
-    def to_json(
-        self,
-        *,
-        signals: Mapping[str, Signal] | None = None,
-        simulation: Mapping[str, Any] | None = None,
-        indent: int | None = 2,
-    ) -> str:
-        """The robot (and optional signals and run settings) as robotconf JSON text.
-
-        Parameters
-        ----------
-        signals : dict, optional
-            Coordinate name (``"q3"``) → signal, stored with the robot.
-        simulation : dict, optional
-            ``t_end`` (required), ``dt``, ``t0``, ``method``.
-        indent : int or None
-            JSON indentation; ``None`` for one line.
-
-        Returns
-        -------
-        str
-            Versioned JSON (docs/file-format.md); :meth:`from_json` reads it back exactly.
-
-        Examples
-        --------
-        >>> import robotconf as rc
-        >>> robot = rc.Robot([rc.Module("Rz", limits=(-1, 1))], end_effector=(0.1, 0, 0))
-        >>> rc.Robot.from_json(robot.to_json()) == robot
-        True
-        """
-        return Setup(cast("Robot", self), signals or {}, simulation).to_json(indent)
-
-    @classmethod
-    def from_json(cls, text: str) -> Robot:
-        """A robot from robotconf JSON text (everything in it is validated).
-
-        Examples
-        --------
-        >>> import robotconf as rc
-        >>> text = '{"format": "robotconf", "version": 1, "robot": {"links": [{"type": "module", '
-        >>> text += '"kind": "Rz", "limits": [-1, 1]}], "end_effector": [2, 0, 0]}}'
-        >>> rc.Robot.from_json(text)
-        Robot([
-            Module('Rz', limits=(-1.0, 1.0)),
-        ], end_effector=(2.0, 0.0, 0.0))
-        """
-        return Setup.from_json(text).robot
-
-    def save(
-        self,
-        path: str | os.PathLike[str],
-        *,
-        signals: Mapping[str, Signal] | None = None,
-        simulation: Mapping[str, Any] | None = None,
-    ) -> Path:
-        """Write :meth:`to_json` to ``path`` (UTF-8) and return the path.
-
-        Examples
-        --------
-        >>> import tempfile, robotconf as rc
-        >>> with tempfile.TemporaryDirectory() as folder:
-        ...     path = rc.preset("planar_2r").save(folder + "/arm.json")
-        ...     rc.load(path) == rc.preset("planar_2r")
-        True
-        """
-        return Setup(cast("Robot", self), signals or {}, simulation).save(path)

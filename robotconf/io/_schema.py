@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 from .._errors import InvalidInputError
 from .._validation import Rejected
 from ..kinematics import MODULE_KINDS, DHLink, Module
+from ..motion import SimulationSettings
 
 if TYPE_CHECKING:
     from ..kinematics import Robot
@@ -23,7 +24,6 @@ __all__ = [
     "VERSION",
     "MAX_LINKS",
     "MAX_NAME_CHARS",
-    "MAX_SAMPLES",
     "robot_to_dict",
     "robot_from_dict",
     "check_simulation",
@@ -37,8 +37,6 @@ VERSION = 1
 MAX_LINKS = 64
 #: Longest robot or link name.
 MAX_NAME_CHARS = 200
-#: Most time samples a file's simulation settings may ask for ((t_end − t0)/dt + 1).
-MAX_SAMPLES = 10_000_000
 
 _MODULE_KEYS = {"type": True, "kind": True, "a": False, "q": False, "name": False, "limits": False}
 _DH_KEYS = {
@@ -54,7 +52,6 @@ _DH_KEYS = {
     "limits": False,
 }
 _ROBOT_KEYS = {"links": True, "name": False, "end_effector": False, "active": False}
-_SIMULATION_KEYS = {"t_end": True, "dt": False, "t0": False, "method": False}
 
 
 class JSONObject(dict):  # type: ignore[type-arg]
@@ -271,31 +268,13 @@ def robot_to_dict(robot: Robot) -> dict[str, Any]:
 def check_simulation(value: Any, path: str = "simulation") -> dict[str, Any]:
     """Simulation settings: ``t_end`` (required), ``dt``, ``t0`` (s) and ``method``.
 
-    Keys left out take :func:`~robotconf.simulate`'s defaults (``dt = 0.001``, ``t0 = 0``,
-    ``method = "analytic"``); at most :data:`MAX_SAMPLES` samples.
+    :meth:`SimulationSettings.from_dict <robotconf.motion.SimulationSettings.from_dict>`
+    checks them (at most :data:`~robotconf.motion.MAX_TIME_SAMPLES` samples, errors named
+    ``simulation.dt`` etc.); the keys given come back normalized, the ones left out stay
+    out so that a file is written back as it was read.
 
     >>> check_simulation({"t_end": 10, "dt": 0.01})
     {'t_end': 10.0, 'dt': 0.01}
     """
-    check_object(value, path, _SIMULATION_KEYS)
-    out: dict[str, Any] = {}
-    for key in ("t_end", "dt", "t0"):
-        if key in value:
-            out[key] = number(value[key], f"{path}.{key}")
-    if "method" in value:
-        out["method"] = text(value["method"], f"{path}.method", ("analytic", "numeric"))
-    t0, dt = out.get("t0", 0.0), out.get("dt", 1e-3)
-    if dt <= 0.0:
-        raise InvalidInputError(f"{path}.dt", dt, "a time step > 0 (s)", problem="must be > 0:")
-    if out["t_end"] <= t0:
-        raise InvalidInputError(
-            f"{path}.t_end", out["t_end"], f"a time after t0 = {t0} s", problem="not after t0:"
-        )
-    if (out["t_end"] - t0) / dt + 1 > MAX_SAMPLES:
-        raise InvalidInputError(
-            f"{path}.dt",
-            dt,
-            f"at most {MAX_SAMPLES:.0e} samples: a larger dt or a shorter run",
-            problem="too many samples at",
-        )
-    return out
+    written = SimulationSettings.from_dict(value, path).to_dict()
+    return {key: written[key] for key in written if key in value}

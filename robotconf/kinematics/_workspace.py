@@ -10,14 +10,16 @@ follow long runs; tables, plots and the 3D cloud import their libraries on use.
 from __future__ import annotations
 
 import time
+import warnings
 from collections.abc import Mapping
 from dataclasses import dataclass
+from functools import cached_property
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import as_float_array, check_vector3
+from .._validation import as_float_array, check_flag, check_integer, check_vector3
 
 if TYPE_CHECKING:  # pragma: no cover
     import pandas as pd
@@ -44,12 +46,7 @@ CHUNK_SIZE = 65_536
 
 
 def _check_count(value: Any, field: str, limit: int) -> int:
-    allowed = f"an integer from 1 to {limit:,}"
-    if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-        raise InvalidInputError(field, value, allowed, problem="not an integer:")
-    if not 1 <= int(value) <= limit:
-        raise InvalidInputError(field, int(value), allowed, problem="out of range:")
-    return int(value)
+    return check_integer(value, field, 1, limit, what=f"an integer from 1 to {limit:,}")
 
 
 def _check_ranges_array(values: Any, robot: Robot) -> np.ndarray:
@@ -79,15 +76,8 @@ def _resolve_ranges(robot: Robot, ranges: Any) -> np.ndarray:
     base = np.array(robot.joint_limits(), dtype=float)  # type: ignore[attr-defined]
     if not ranges:
         return _check_ranges_array(base, robot)
-    coordinates, modules = robot.coordinate_names, robot.module_names
-    allowed_keys = f"coordinate names {coordinates[0]}…{coordinates[-1]} or module names"
     for key, pair in ranges.items():
-        if isinstance(key, str) and key.strip().lower() in coordinates:
-            index = coordinates.index(key.strip().lower())
-        elif isinstance(key, str) and key in modules:
-            index = modules.index(key)
-        else:
-            raise InvalidInputError("ranges", key, allowed_keys, problem="unknown coordinate")
+        index = robot.index(key, "ranges")
         allowed = "a pair of finite numbers (lo, hi) with lo ≤ hi"
         row = as_float_array(pair, f"ranges[{key!r}]", allowed)
         if row.shape != (2,):
@@ -108,20 +98,11 @@ def _check_method(method: Any) -> str:
 def _check_seed(seed: Any) -> int | None:
     if seed is None:
         return None
-    allowed = "None or an integer ≥ 0"
-    if isinstance(seed, (bool, np.bool_)) or not isinstance(seed, (int, np.integer)):
-        raise InvalidInputError("seed", seed, allowed, problem="not an integer:")
-    if int(seed) < 0:
-        raise InvalidInputError("seed", int(seed), allowed, problem="negative:")
-    return int(seed)
+    return check_integer(seed, "seed", 0, what="None or an integer ≥ 0")
 
 
 def _check_progress(progress: Any) -> bool | None:
-    if progress is None or isinstance(progress, (bool, np.bool_)):
-        return None if progress is None else bool(progress)
-    raise InvalidInputError(
-        "progress", progress, "None (automatic), True or False", problem="not a flag:"
-    )
+    return None if progress is None else check_flag(progress, "progress")
 
 
 def grid_size(samples: int, free: int) -> int:
@@ -216,8 +197,9 @@ def workspace(
         (``grid``: ``m`` values per moving coordinate with ``m^k ≤ samples``).
     ranges : array-like, shape (n, 2), or dict, optional
         ``(lo, hi)`` per coordinate (radians for rotations, length for translations).
-        Default: ``robot.joint_limits()``. A dict maps coordinate names (``"q2"``) or
-        module names (``"M2"``) to pairs and overrides only those coordinates. A pair with
+        Default: ``robot.joint_limits()``. A dict maps coordinates, named as
+        :meth:`Robot.index` reads them (``"q2"``, ``"M2"``, a module's own name or a 0-based
+        index), to pairs and overrides only those coordinates. A pair with
         ``lo == hi`` holds that coordinate fixed.
     method : {"random", "grid"}
         ``random``: independent uniform samples. ``grid``: every combination of ``m``
@@ -356,14 +338,18 @@ class Workspace:
         """
         return np.linalg.norm(self.points - np.array(check_vector3(center, "center")), axis=1)
 
-    def frame(self) -> pd.DataFrame:
+    @cached_property
+    def table(self) -> pd.DataFrame:
         """The samples as a pandas DataFrame: columns ``q1 … qn``, ``x``, ``y``, ``z``.
+
+        One row per point (radians / length, then length units). Built once and cached,
+        as :attr:`Motion.table <robotconf.motion.Motion.table>`; copy it before editing.
 
         Examples
         --------
         >>> import robotconf as rc
         >>> slide = rc.Robot([rc.Module("Tx")])
-        >>> workspace(slide, 2, ranges=[(0, 1)], method="grid").frame()
+        >>> workspace(slide, 2, ranges=[(0, 1)], method="grid").table
             q1    x    y    z
         0  0.0  0.0  0.0  0.0
         1  1.0  1.0  0.0  0.0
@@ -373,6 +359,30 @@ class Workspace:
         data = np.hstack([self.q, self.points])
         columns = [*self.robot.coordinate_names, "x", "y", "z"]
         return pd.DataFrame(data, columns=columns)
+
+    def frame(self) -> pd.DataFrame:
+        """Deprecated: the same DataFrame as the property :attr:`table`.
+
+        Returns
+        -------
+        pandas.DataFrame, shape (N, n + 3)
+
+        Examples
+        --------
+        >>> import warnings, robotconf as rc
+        >>> ws = workspace(rc.Robot([rc.Module("Tx")]), 2, ranges=[(0, 1)], method="grid")
+        >>> with warnings.catch_warnings(record=True) as caught:
+        ...     warnings.simplefilter("always")
+        ...     same = ws.frame() is ws.table
+        >>> same, caught[0].category.__name__
+        (True, 'DeprecationWarning')
+        """
+        warnings.warn(
+            "Workspace.frame() is now the property Workspace.table",
+            DeprecationWarning,
+            stacklevel=2,
+        )
+        return self.table
 
     def plot(self, **kwargs: Any) -> Figure:
         """3D scatter plus the XY, XZ and YZ projections (see ``_workspace_plot``)."""

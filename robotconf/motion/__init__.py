@@ -1,7 +1,8 @@
 """Motion: drive coordinates with signals and get the DVA of every frame and the EE.
 
 Simulation
-    :func:`simulate`, :class:`Motion`, :data:`METHODS`
+    :func:`simulate`, :class:`Motion`, :class:`SimulationSettings`, :data:`METHODS`,
+    :data:`MAX_TIME_SAMPLES`, :data:`MAX_SAMPLE_POINTS`
 Displacement, velocity, acceleration (numpy)
     :data:`QUANTITIES`, :func:`analytic_dva`, :func:`numeric_dva`,
     :func:`first_derivative`, :func:`second_derivative`
@@ -17,7 +18,8 @@ array([0., 1., 2.])
 
 from ._dva import QUANTITIES, analytic_dva, first_derivative, numeric_dva, second_derivative
 from ._motion import Motion
-from ._simulation import MAX_SAMPLE_POINTS, METHODS, simulate
+from ._settings import MAX_SAMPLE_POINTS, MAX_TIME_SAMPLES, METHODS, SimulationSettings
+from ._simulation import simulate
 from ._table import (
     EXCEL_MAX_ROWS,
     STATS,
@@ -32,7 +34,9 @@ __all__ = [
     # simulation
     "simulate",
     "Motion",
+    "SimulationSettings",
     "METHODS",
+    "MAX_TIME_SAMPLES",
     "MAX_SAMPLE_POINTS",
     # DVA
     "QUANTITIES",

@@ -1,6 +1,7 @@
 """Displacement, velocity and acceleration (DVA) of every frame origin and the end-effector.
 
-Two named ways (docs/conventions.md, "Motion and DVA"), both numpy only and vectorized over the ``T`` samples:
+Two named ways (docs/conventions.md, "Motion and DVA"), both numpy only and vectorized
+over the ``T`` samples:
 
 ``analytic``
     The classical outward recursion of rigid-body kinematics with the signals' exact

@@ -12,75 +12,34 @@ from .._validation import check_finite_number
 from ..signals import Constant, Signal
 from ._dva import analytic_dva, first_derivative, numeric_dva, second_derivative
 from ._motion import Motion
+from ._settings import MAX_SAMPLE_POINTS, SimulationSettings
 
 if TYPE_CHECKING:
     from ..kinematics import Robot
 
-__all__ = ["simulate", "METHODS", "MAX_SAMPLE_POINTS"]
-
-#: The two ways of differentiating (docs/conventions.md, "Motion").
-METHODS = ("analytic", "numeric")
-
-#: Default ceiling on samples × points (points = modules + EE). Each sample-point holds
-#: 15 floats (120 bytes), so the default allows about 6 GB of results.
-MAX_SAMPLE_POINTS = 50_000_000
-
-
-def _check_method(method: Any) -> str:
-    allowed = "'analytic' (exact chain rule) or 'numeric' (finite differences)"
-    if not isinstance(method, str) or method.strip().lower() not in METHODS:
-        raise InvalidInputError("method", method, allowed, problem="unknown method")
-    return method.strip().lower()
-
-
-def _time_grid(t0: Any, t_end: Any, dt: Any, points: int, limit: int) -> np.ndarray:
-    start = check_finite_number(t0, "t0")
-    stop = check_finite_number(t_end, "t_end")
-    step = check_finite_number(dt, "dt")
-    if step <= 0.0:
-        raise InvalidInputError("dt", step, "a time step > 0 (s)", problem="must be positive, got")
-    if stop <= start:
-        raise InvalidInputError(
-            "t_end", stop, f"a time after t0 = {start} s", problem="must be later than t0, got"
-        )
-    steps = (stop - start) / step
-    # Round-off in (t_end − t0)/dt must not drop the last sample (0.3/0.1 = 2.9999…).
-    count = int(np.floor(steps + max(1e-9, 8.0 * np.finfo(float).eps * steps))) + 1
-    if count * points > limit:
-        raise InvalidInputError(
-            "dt",
-            step,
-            f"at most {limit:.3g} samples × points: increase dt, shorten t_end − t0, or pass "
-            "a larger max_sample_points if you have the memory (120 bytes each)",
-            problem=f"{count} samples × {points} points = {count * points:.3g} is too many at",
-        )
-    return start + step * np.arange(count)
+__all__ = ["simulate"]
 
 
 def _check_signals(robot: Robot, signals: Any) -> dict[int, Signal]:
-    names = robot.coordinate_names
-    allowed = f"coordinate names {names[0]}…{names[-1]} or indices 0 to {robot.n - 1}"
     if signals is None:
         return {}
     if not isinstance(signals, Mapping):
+        names = robot.coordinate_names
         raise InvalidInputError(
-            "signals", signals, f"a dict mapping {allowed} to signals", problem="not a dict:"
+            "signals",
+            signals,
+            f"a dict mapping coordinate names {names[0]}…{names[-1]} or indices to signals",
+            problem="not a dict:",
         )
     result: dict[int, Signal] = {}
     for key, signal in signals.items():
-        if isinstance(key, str) and key.strip().lower() in names:
-            index = names.index(key.strip().lower())
-        elif isinstance(key, (int, np.integer)) and not isinstance(key, (bool, np.bool_)):
-            if not 0 <= int(key) < robot.n:
-                raise InvalidInputError(
-                    "signals", key, allowed, problem=f"no coordinate {int(key)} on this robot:"
-                )
-            index = int(key)
-        else:
-            raise InvalidInputError("signals", key, allowed, problem="unknown coordinate")
+        index = robot.index(key, "signals")
         if index in result:
             raise InvalidInputError(
-                "signals", key, allowed, problem=f"{names[index]} is given twice:"
+                "signals",
+                key,
+                "each coordinate once",
+                problem=f"{robot.coordinate_names[index]} is given twice:",
             )
         if not isinstance(signal, Signal):
             try:
@@ -109,8 +68,9 @@ def simulate(
     ----------
     robot : Robot
     signals : dict
-        Maps coordinate names (``"q3"``) or 0-based indices to
-        :class:`~robotconf.signals.Signal` objects (a plain number means a constant).
+        Maps coordinates to :class:`~robotconf.signals.Signal` objects (a plain number
+        means a constant); a key is anything :meth:`Robot.index <robotconf.Robot.index>`
+        reads: a coordinate name (``"q3"``), a module name (``"M3"``) or a 0-based index.
         Coordinates without a signal hold their module's own ``q``.
     t_end : float
         Last sample time (s), included when ``t_end − t0`` is a multiple of ``dt``.
@@ -124,7 +84,11 @@ def simulate(
         Simulink's Derivative block (see :mod:`robotconf.motion._dva`). Then ``Motion.qd`` and
         ``Motion.qdd`` are finite differences too.
     max_sample_points : int
-        Refuse runs with more samples × points (points = modules + EE).
+        Refuse runs with more samples × points (points = modules + EE); default
+        :data:`MAX_SAMPLE_POINTS`. Samples alone never exceed :data:`MAX_TIME_SAMPLES`.
+
+    The time settings are checked by :class:`SimulationSettings`; with one at hand, call
+    ``simulate(robot, signals, **settings.to_dict())``.
 
     Returns
     -------
@@ -133,8 +97,9 @@ def simulate(
     Raises
     ------
     InvalidInputError
-        For ``dt ≤ 0``, ``t_end ≤ t0``, too many samples, an unknown method, a signal for a
-        coordinate that does not exist, or fewer than 4 samples with ``numeric``.
+        Naming the field: ``dt ≤ 0``, ``t_end ≤ t0``, too many samples (or samples ×
+        points), an unknown method, a signal for a coordinate that does not exist, or
+        fewer than 4 samples with ``numeric``.
 
     Examples
     --------
@@ -154,11 +119,11 @@ def simulate(
     >>> float(motion.table[("EE", "position", "x")].max())  # 30 + 40 cos 0
     70.0
     """
-    method = _check_method(method)
+    settings = SimulationSettings(t_end, dt, t0, method)
     chosen = _check_signals(robot, signals)
     limit = int(check_finite_number(max_sample_points, "max_sample_points"))
-    t = _time_grid(t0, t_end, dt, robot.n + 1, limit)
-    step = check_finite_number(dt, "dt")
+    t = settings.time_grid(robot.n + 1, limit)
+    method, step = settings.method, settings.dt
     n, samples = robot.n, t.size
     q = np.empty((n, samples))
     qd = np.zeros((n, samples))

@@ -9,7 +9,7 @@ import ipywidgets as widgets
 
 from .._errors import InvalidInputError
 from ..kinematics import Robot
-from ..motion import METHODS, Motion, simulate
+from ..motion import METHODS, Motion, SimulationSettings, simulate
 from ..signals import Signal
 from ._errors_display import ErrorLabel
 from ._motion_results import MotionResults
@@ -23,6 +23,11 @@ def _unit(robot: Robot, i: int) -> str:
 
 class MotionSection:
     """Signals, t_end, dt, method and Run; ``motion`` is the last successful simulation.
+
+    Run and save check the time settings with the core's
+    :class:`~robotconf.motion.SimulationSettings`, so the panel refuses exactly what
+    :func:`~robotconf.simulate`, files and the report command refuse. A start time ``t0``
+    has no control: it comes from a loaded file (else 0) and is saved back with it.
 
     Parameters
     ----------
@@ -56,6 +61,7 @@ class MotionSection:
         method: str = "analytic",
     ):
         self._robot = robot
+        self._t0 = 0.0
         self.motion: Motion | None = None
         self.editors: list[Any] = []
         self.t_end = widgets.FloatText(
@@ -141,10 +147,29 @@ class MotionSection:
             for name in ("t_end", "dt", "method"):
                 if name in simulation:
                     getattr(self, name).value = simulation[name]
+        # t0 has no control to show it, so a file without one must not inherit the last.
+        self._t0 = float(simulation.get("t0", 0.0)) if simulation else 0.0
 
     def settings(self) -> dict[str, Any]:
-        """``{"t_end", "dt", "method"}`` as typed."""
-        return {"t_end": self.t_end.value, "dt": self.dt.value, "method": self.method.value}
+        """``{"t_end", "dt", "method"}`` as typed, and ``t0`` when a file set one ≠ 0."""
+        typed = {"t_end": self.t_end.value, "dt": self.dt.value, "method": self.method.value}
+        return typed if self._t0 == 0.0 else {**typed, "t0": self._t0}
+
+    def simulation_settings(self) -> SimulationSettings:
+        """The typed settings checked by the core.
+
+        Raises
+        ------
+        InvalidInputError
+            Named after the setting (``t_end``, ``dt``, ``t0`` or ``method``).
+
+        Examples
+        --------
+        >>> section = MotionSection(lambda: None, lambda motion: None, t_end=2.0, dt=0.5)
+        >>> section.simulation_settings().samples
+        5
+        """
+        return SimulationSettings(**self.settings())
 
     def error_items(self) -> Iterator[tuple[str, ErrorLabel]]:
         """``(key, label)``: ``t_end``, ``dt``, ``method``, ``run`` and ``signals.q…``."""
@@ -164,14 +189,12 @@ class MotionSection:
             self.status.value = "<small>fix the signal marked in red</small>"
             return None
         robot = self._robot()
-        settings = self.settings()
         try:
+            settings = self.simulation_settings()
             motion = simulate(
                 robot,
                 dict(signals),  # type: ignore[arg-type]
-                settings["t_end"],
-                settings["dt"],
-                method=settings["method"],
+                **settings.to_dict(),
             )
         except InvalidInputError as error:
             self.setting_errors.get(error.field, self.run_error).show(str(error))

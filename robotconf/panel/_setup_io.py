@@ -13,15 +13,24 @@ from typing import Any
 
 from ..io import load_setup
 from ..kinematics import Robot
+from ..motion import SimulationSettings
 from ..signals import Signal
 
 __all__ = ["setup_to_json", "setup_from"]
 
 
 def setup_to_json(
-    robot: Robot, signals: Mapping[str, Signal], simulation: Mapping[str, Any] | None
+    robot: Robot,
+    signals: Mapping[str, Signal],
+    simulation: Mapping[str, Any] | SimulationSettings | None,
 ) -> str:
-    """The core's JSON text of a robot with its signals and time settings."""
+    """The core's JSON text of a robot with its signals and time settings.
+
+    The settings pass through :class:`~robotconf.motion.SimulationSettings`, so saving
+    refuses what Run refuses (errors named ``simulation.dt`` etc.).
+    """
+    if isinstance(simulation, SimulationSettings):
+        simulation = simulation.to_dict()  # Robot.to_json's signature names a mapping
     return robot.to_json(signals=dict(signals), simulation=simulation)
 
 
@@ -30,5 +39,5 @@ def setup_from(
 ) -> tuple[Robot, dict[str, Signal], dict[str, Any] | None]:
     """``(robot, signals, simulation)`` from a path or uploaded bytes, validated by the core."""
     setup = load_setup(source)
-    simulation = None if setup.simulation is None else dict(setup.simulation)
+    simulation = None if setup.simulation is None else setup.simulate_kwargs()
     return setup.robot, dict(setup.signals), simulation

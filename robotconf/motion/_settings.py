@@ -1,0 +1,271 @@
+"""Simulation settings (t_end, dt, t0, method): validated once, used by every front end.
+
+:func:`~robotconf.motion.simulate`, the file format, the ``robotconf report`` command and
+the panel all build a :class:`SimulationSettings`, so the same rules, limits and messages
+apply wherever a run is described.
+"""
+
+from __future__ import annotations
+
+import dataclasses
+from collections.abc import Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from .._errors import InvalidInputError
+from .._validation import Rejected, check_finite_number, check_integer
+
+__all__ = ["SimulationSettings", "METHODS", "MAX_TIME_SAMPLES", "MAX_SAMPLE_POINTS"]
+
+#: The two ways of differentiating (docs/conventions.md, "Motion").
+METHODS = ("analytic", "numeric")
+
+#: Ceiling on time samples, ``(t_end − t0)/dt + 1``, wherever settings are made (files,
+#: :func:`~robotconf.motion.simulate`, the report command, the panel). 10⁷ samples are
+#: 2.8 hours at 1 ms, far beyond a teaching run, and keep even a one-module robot's
+#: results (2 points × 120 bytes per sample) near 2.4 GB.
+MAX_TIME_SAMPLES = 10_000_000
+
+#: Default ceiling on samples × points of one run (points = modules + EE). Each
+#: sample-point holds 15 floats (120 bytes), so the default allows about 6 GB of results;
+#: it only binds for robots of five or more modules, below which MAX_TIME_SAMPLES does.
+MAX_SAMPLE_POINTS = 50_000_000
+
+_FIELDS = ("t_end", "dt", "t0", "method")
+_REQUIRED = {"t_end": True, "dt": False, "t0": False, "method": False}
+_METHOD_ALLOWED = "'analytic' (exact chain rule) or 'numeric' (finite differences)"
+
+
+def _check_method(method: Any) -> str:
+    if not isinstance(method, str) or method.strip().lower() not in METHODS:
+        raise InvalidInputError("method", method, _METHOD_ALLOWED, problem="unknown method")
+    return method.strip().lower()
+
+
+def _sample_count(t0: float, t_end: float, dt: float) -> int:
+    steps = (t_end - t0) / dt
+    # ``not <`` also catches an infinite quotient (a tiny dt), before int() could overflow.
+    if not steps < MAX_TIME_SAMPLES:
+        raise InvalidInputError(
+            "dt",
+            dt,
+            f"at most {MAX_TIME_SAMPLES:,} time samples ((t_end − t0)/dt + 1 = {steps + 1:.4g} "
+            "here): increase dt or shorten t_end − t0",
+            problem="too many samples at",
+        )
+    # Round-off in (t_end − t0)/dt must not drop the last sample (0.3/0.1 = 2.9999…).
+    return int(np.floor(steps + max(1e-9, 8.0 * np.finfo(float).eps * steps))) + 1
+
+
+def _json_number(value: Any, path: str) -> float:
+    """A JSON number as float: JSON has no NaN/Infinity, and true/false are not numbers."""
+    allowed = "a finite number"
+    if isinstance(value, Rejected):
+        raise InvalidInputError(path, value, allowed, problem=f"{value.reason}:")
+    if isinstance(value, bool):
+        raise InvalidInputError(path, value, allowed, problem="expected a number, got a boolean:")
+    if not isinstance(value, (int, float)):
+        raise InvalidInputError(path, value, allowed, problem="expected a number, got")
+    try:
+        return float(value)
+    except OverflowError:
+        raise InvalidInputError(path, value, allowed, problem="too large:") from None
+
+
+@dataclass(frozen=True)
+class SimulationSettings:
+    """When and how a run samples its signals: ``t0 … t_end`` every ``dt``, one method.
+
+    Parameters
+    ----------
+    t_end : float
+        Last sample time (s), included when ``t_end − t0`` is a multiple of ``dt``;
+        later than ``t0``.
+    dt : float
+        Time step (s), > 0.
+    t0 : float
+        First sample time (s).
+    method : {"analytic", "numeric"}
+        How velocities and accelerations are found (any case; stored in lower case).
+
+    Raises
+    ------
+    InvalidInputError
+        Naming the field: a value that is not a finite number, ``dt ≤ 0``,
+        ``t_end ≤ t0``, an unknown method, or more than :data:`MAX_TIME_SAMPLES`
+        samples (named ``dt``).
+
+    Examples
+    --------
+    The paper's run (§3, Figures 16–19): Simulink's default stop time at 1 ms.
+
+    >>> settings = SimulationSettings(t_end=10.0)
+    >>> settings.samples
+    10001
+    >>> settings.to_dict()
+    {'t_end': 10.0, 'dt': 0.001, 't0': 0.0, 'method': 'analytic'}
+    >>> SimulationSettings(0.3, dt=0.1).time_grid()
+    array([0. , 0.1, 0.2, 0.3])
+    >>> SimulationSettings(1.0, dt=0.0)
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: dt: must be positive, got 0.0; allowed: a time step > 0 (s)
+    """
+
+    t_end: float
+    dt: float = 1e-3
+    t0: float = 0.0
+    method: str = "analytic"
+
+    def __post_init__(self) -> None:
+        t_end = check_finite_number(self.t_end, "t_end")
+        dt = check_finite_number(self.dt, "dt")
+        t0 = check_finite_number(self.t0, "t0")
+        if dt <= 0.0:
+            raise InvalidInputError(
+                "dt", dt, "a time step > 0 (s)", problem="must be positive, got"
+            )
+        if t_end <= t0:
+            raise InvalidInputError(
+                "t_end", t_end, f"a time after t0 = {t0} s", problem="must be later than t0, got"
+            )
+        method = _check_method(self.method)
+        _sample_count(t0, t_end, dt)
+        for name, value in (("t_end", t_end), ("dt", dt), ("t0", t0), ("method", method)):
+            object.__setattr__(self, name, value)
+
+    @property
+    def samples(self) -> int:
+        """Number of sample times, ``⌊(t_end − t0)/dt⌋ + 1`` (round-off safe).
+
+        >>> SimulationSettings(0.3, dt=0.1).samples  # 0.3/0.1 = 2.9999… in floats
+        4
+        """
+        return _sample_count(self.t0, self.t_end, self.dt)
+
+    def time_grid(self, points: int = 1, limit: int = MAX_SAMPLE_POINTS) -> np.ndarray:
+        """The sample times ``t0, t0 + dt, …`` (s), refusing runs too big for memory.
+
+        Parameters
+        ----------
+        points : int
+            Points computed at every sample (modules + EE for a robot), ≥ 1.
+        limit : int
+            Largest allowed samples × points (see :data:`MAX_SAMPLE_POINTS`).
+
+        Returns
+        -------
+        ndarray, shape (samples,)
+
+        Raises
+        ------
+        InvalidInputError
+            Named ``dt`` when samples × points exceeds ``limit``.
+
+        Examples
+        --------
+        >>> SimulationSettings(1.0, dt=0.3, t0=0.1).time_grid()
+        array([0.1, 0.4, 0.7, 1. ])
+        >>> SimulationSettings(10.0).time_grid(points=4, limit=40_000)
+        Traceback (most recent call last):
+        ...
+        robotconf.InvalidInputError: dt: 10001 samples × 4 points = 4e+04 is too many at ...
+        """
+        points = check_integer(points, "points", 1)
+        limit = check_integer(limit, "max_sample_points")
+        count = self.samples
+        if count * points > limit:
+            raise InvalidInputError(
+                "dt",
+                self.dt,
+                f"at most {limit:.3g} samples × points: increase dt, shorten t_end − t0, or "
+                "pass a larger max_sample_points if you have the memory (120 bytes each)",
+                problem=f"{count} samples × {points} points = {count * points:.3g} is too many at",
+            )
+        return self.t0 + self.dt * np.arange(count)
+
+    def with_changes(self, **changes: Any) -> SimulationSettings:
+        """A copy with some fields replaced, validated as a whole.
+
+        >>> SimulationSettings(10.0).with_changes(dt=0.01, method="numeric")
+        SimulationSettings(t_end=10.0, dt=0.01, t0=0.0, method='numeric')
+        """
+        for key in changes:
+            if key not in _FIELDS:
+                raise InvalidInputError(
+                    key, changes[key], f"the fields {', '.join(_FIELDS)}", problem="unknown field"
+                )
+        return dataclasses.replace(self, **changes)
+
+    def to_dict(self) -> dict[str, Any]:
+        """All four settings as plain data (the file format's ``"simulation"`` object).
+
+        >>> SimulationSettings(2.0, method="Numeric").to_dict()
+        {'t_end': 2.0, 'dt': 0.001, 't0': 0.0, 'method': 'numeric'}
+        """
+        return {"t_end": self.t_end, "dt": self.dt, "t0": self.t0, "method": self.method}
+
+    @classmethod
+    def from_dict(cls, data: Any, path: str = "simulation") -> SimulationSettings:
+        """Settings from parsed JSON: only the four keys, ``t_end`` required.
+
+        Parameters
+        ----------
+        data : dict
+            ``t_end``, ``dt``, ``t0`` (JSON numbers, s) and ``method`` (text); keys left
+            out take the defaults.
+        path : str
+            Where ``data`` sits in its document; every error names ``path.key``.
+
+        Returns
+        -------
+        SimulationSettings
+
+        Raises
+        ------
+        InvalidInputError
+            For anything but an object, an unknown, repeated or missing key, a value of
+            the wrong JSON type, or any rule of the constructor.
+
+        Examples
+        --------
+        >>> SimulationSettings.from_dict({"t_end": 5, "dt": 0.01})
+        SimulationSettings(t_end=5.0, dt=0.01, t0=0.0, method='analytic')
+        >>> SimulationSettings.from_dict({"t_end": 5, "dt": True})
+        Traceback (most recent call last):
+        ...
+        robotconf.InvalidInputError: simulation.dt: expected a number, got a boolean: True; ...
+        """
+        keys = ", ".join(k if required else f"{k} (optional)" for k, required in _REQUIRED.items())
+        if not isinstance(data, Mapping):
+            raise InvalidInputError(
+                path, data, f"an object with keys {keys}", problem="expected an object, got"
+            )
+        duplicates = getattr(data, "duplicates", ())  # set by the file reader's JSON parser
+        if duplicates:
+            raise InvalidInputError(
+                f"{path}.{duplicates[0]}", duplicates[0], "each key once", problem="duplicate key"
+            )
+        for key in data:
+            if key not in _REQUIRED:
+                raise InvalidInputError(
+                    f"{path}.{key}", data[key], f"the keys {keys}", problem="unknown key, value"
+                )
+        if "t_end" not in data:
+            raise InvalidInputError(f"{path}.t_end", None, f"the keys {keys}", problem="missing")
+        values: dict[str, Any] = {}
+        for key in ("t_end", "dt", "t0"):
+            if key in data:
+                values[key] = _json_number(data[key], f"{path}.{key}")
+        if "method" in data:
+            if not isinstance(data["method"], str):
+                raise InvalidInputError(
+                    f"{path}.method", data["method"], _METHOD_ALLOWED, problem="expected text, got"
+                )
+            values["method"] = data["method"]
+        try:
+            return cls(**values)
+        except InvalidInputError as error:
+            raise error.within(path) from None
