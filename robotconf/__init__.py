@@ -47,7 +47,7 @@ from .kinematics import (
     transfer_matrix,
     workspace,
 )
-from .motion import Motion, compare_motions, simulate
+from .motion import Motion, SimulationSettings, compare_motions, simulate
 from .plots import plot_coordinates, plot_motion, plot_robot, plot_workspace
 from .presets import preset, preset_names
 from .teaching import (
@@ -92,6 +92,7 @@ __all__ = [
     "signals",
     "simulate",
     "Motion",
+    "SimulationSettings",
     "compare_motions",
     # teaching
     "derivation",

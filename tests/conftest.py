@@ -1,8 +1,9 @@
 """Shared fixtures and independent reference formulas for the tests.
 
-The references below are written out literally from docs/conventions.md, "Modules" (the paper's eq. 11–16),
-the paper's eq. 10 and Craig's modified-DH matrix, one sample at a time with plain 4×4
-products: deliberately the simplest possible code, independent of the numpy kernel.
+The references below are written out literally from docs/conventions.md, "Modules" (the
+paper's eq. 11–16), the paper's eq. 10 and Craig's modified-DH matrix, one sample at a
+time with plain 4×4 products: deliberately the simplest possible code, independent of the
+numpy kernel.
 """
 
 from __future__ import annotations

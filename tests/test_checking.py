@@ -391,10 +391,10 @@ def test_malformed_student_input_raises(robot, student, message):
     ("kwargs", "message"),
     [
         ({"tol": -1}, "tol: invalid value -1"),
-        ({"tol": True}, "tol: invalid value True"),
+        ({"tol": True}, "tol: a boolean is not a number: True"),
         ({"tol": 2}, "tol: invalid value 2"),
-        ({"samples": 0}, "samples: invalid value 0"),
-        ({"samples": 2.5}, "samples: invalid value 2.5"),
+        ({"samples": 0}, "samples: out of range: 0; allowed: an integer ≥ 1"),
+        ({"samples": 2.5}, "samples: not an integer: 2.5"),
         ({"symbols": ["a b"]}, "symbols: invalid value 'a b'"),
     ],
 )

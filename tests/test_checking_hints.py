@@ -228,3 +228,17 @@ def test_hint_helpers_stay_numpy_only_and_never_evaluate_text():
     assert not re.search(r"\b(eval|exec|sympify|parse_expr)\(", source)
     code = "import sys, robotconf.teaching; assert 'sympy' not in sys.modules"
     subprocess.run([sys.executable, "-c", code], check=True)
+
+
+def test_rotation_pattern_names_where_the_kernel_puts_the_sines():
+    import re
+
+    from robotconf.teaching._mistakes import ROTATION_PATTERN
+
+    for axis, text in ROTATION_PATTERN.items():
+        matrix = rc.transfer_matrix(f"R{axis}", 0.3)
+        found = re.findall(r"([−+])sin in entry \((\d),(\d)\)", text)
+        assert len(found) == 2
+        for sign, row, col in found:
+            expected = np.sin(0.3) * (-1 if sign == "−" else 1)
+            assert matrix[int(row) - 1, int(col) - 1] == pytest.approx(expected, abs=1e-15)

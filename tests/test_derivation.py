@@ -29,6 +29,7 @@ def test_step_names_and_order(paper_robot):
     assert [s.name for s in steps] == ["A1", "A2", "A3", "M1", "M2", "M3", "p_EE"]
     assert len(steps) == 7
     assert steps["m3"] is steps["M3"] and steps["EE"] is steps["p_EE"]
+    assert steps["P"] is steps["p_EE"] and steps["a_2"] is steps["A2"]
     assert [s.kind for s in steps] == ["transfer"] * 3 + ["pose"] * 3 + ["end_effector"]
 
 
@@ -172,9 +173,11 @@ def test_repr_and_matrices(paper_robot):
 def test_error_branches(paper_robot):
     with pytest.raises(ValueError, match="lengths: needs symbolic"):
         derivation(paper_robot, lengths=True)
-    with pytest.raises(ValueError, match="precision: invalid value 20"):
+    with pytest.raises(
+        ValueError, match="precision: out of range: 20; allowed: an integer from 0 to 15"
+    ):
         derivation(paper_robot, precision=20)
-    with pytest.raises(ValueError, match="precision: invalid value 2.5"):
+    with pytest.raises(ValueError, match="precision: not an integer: 2.5"):
         derivation(paper_robot, precision=2.5)
     with pytest.raises(ValueError, match=r"q: expected shape \(3,\)"):
         derivation(paper_robot, q=[0, 0])
@@ -182,5 +185,5 @@ def test_error_branches(paper_robot):
         derivation(paper_robot, q=[[0, 0, 0], [1, 1, 1]])
     with pytest.raises(ValueError, match="robot: not a robot"):
         derivation("RzRyRy")
-    with pytest.raises(ValueError, match="name: no step named 'M7'"):
+    with pytest.raises(ValueError, match="name: unknown matrix name 'M7'; allowed: A1 … A3"):
         derivation(paper_robot, q=[0, 0, 0])["M7"]

@@ -139,6 +139,8 @@ def test_cylindrical_style_chain_with_twist_and_tail(rng):
     )
     dh = rc.modules_to_dh(robot, constant=[2, "M5"])
     assert dh.joint_types == ("revolute", "prismatic", "prismatic")
+    # The robot resolves the held modules: coordinate names and numpy integers work too.
+    assert rc.modules_to_dh(robot, constant=["q3", np.int64(4)]) == dh
     assert dh.modules[0].limits == (-1.0, 1.0)
     for q in rng.uniform(-2, 2, size=(20, 3)):
         full = np.array([q[0], q[1], -PI / 2, q[2], 0.3])
@@ -221,9 +223,10 @@ def test_inactive_and_none_modules_are_dropped(rng):
             [Module("Rz")],
             "standard",
             [5],
-            r"constant: invalid value 5; allowed: module indices 0…0",
+            r"constant: out of range: 5; allowed: an index 0 to 0, a module name \(M1\)",
         ),
-        ([Module("Rz")], "standard", ["shoulder"], r"constant: invalid value 'shoulder'"),
+        ([Module("Rz")], "standard", ["shoulder"], r"constant: unknown module 'shoulder'"),
+        ([Module("Rz")], "standard", 2.5, r"constant: not an integer: 2.5"),
         ([Module("Rz")], "craig", (), r"convention: unknown DH convention 'craig'"),
     ],
 )

@@ -100,6 +100,12 @@ def test_paper_robot_closed_form() -> None:
         jacobian(robot, [0, 0, q3], frame="M2"), jacobian(robot, [0, 0, q3], 1)
     )
     np.testing.assert_array_equal(jacobian(robot, [0, 0, q3], "EE"), j)
+    # The robot resolves the frame: a coordinate name and " ee " name the same frames.
+    np.testing.assert_array_equal(
+        jacobian(robot, [0, 0, q3], frame="q2"), jacobian(robot, [0, 0, q3], 1)
+    )
+    np.testing.assert_array_equal(jacobian(robot, [0, 0, q3], " ee "), j)
+    np.testing.assert_allclose(jacobian(robot, [0, 0, q3], "M2")[:3, 0], [0, 0, 0], atol=1e-15)
     np.testing.assert_array_equal(jacobian(robot.with_q([0, 0, q3])), j)
 
 
@@ -113,11 +119,11 @@ def test_prismatic_column_is_the_axis() -> None:
 @pytest.mark.parametrize(
     ("kwargs", "match"),
     [
-        ({"frame": "M7"}, r"frame: unknown frame 'M7'; allowed: None or 'EE'"),
+        ({"frame": "M7"}, r"frame: unknown module 'M7'; allowed: an index 0 to 2, .*or 'EE'"),
         ({"frame": 3}, r"frame: out of range: 3; allowed: .*index 0 to 2"),
         ({"frame": -1}, r"frame: out of range: -1"),
-        ({"frame": True}, r"frame: not a frame: True"),
-        ({"frame": 1.0}, r"frame: not a frame"),
+        ({"frame": True}, r"frame: not an integer: True"),
+        ({"frame": 1.0}, r"frame: not an integer: 1.0"),
         ({"q": [0, 0]}, r"q: expected shape \(3,\) or \(T, 3\)"),
         ({"q": [0, np.nan, 0]}, r"q: q2 must be finite"),
     ],

@@ -78,7 +78,19 @@ def test_figure_is_not_registered_with_pyplot() -> None:
     assert plt.get_fignums() == before
 
 
+def test_point_is_resolved_by_the_robot() -> None:
+    motion = simulate(paper_robot(), {"q2": Quintic()}, t_end=1.0, dt=0.1)
+    by_name, by_coordinate, by_index = (plot_motion(motion, p) for p in ("M3", "q3", 2))
+    for fig in (by_coordinate, by_index):
+        assert fig.axes[0].get_title() == "M3: x"
+        np.testing.assert_array_equal(
+            fig.axes[2].lines[0].get_data()[1], by_name.axes[2].lines[0].get_data()[1]
+        )
+    np.testing.assert_array_equal(by_index.axes[2].lines[0].get_data()[1], motion.position[:, 2, 2])
+
+
 def test_unknown_point() -> None:
     motion = simulate(paper_robot(), {}, t_end=1.0, dt=0.1)
-    with pytest.raises(ValueError, match=r"point: unknown point 'M4'; allowed: one of \('M1'"):
+    pattern = r"point: unknown module 'M4'; allowed: .*\(M1, M2, M3\).*or 'EE'"
+    with pytest.raises(ValueError, match=pattern):
         motion.plot("M4")

@@ -185,3 +185,21 @@ def test_block_boundaries_do_not_change_results(block_size, rng):
         robot.frame_origins(q),
         atol=1e-12,
     )
+
+
+@pytest.mark.parametrize("name", ["q1", "Q1", "EE", " ee "])
+def test_a_module_name_that_would_be_ambiguous_is_refused(name):
+    # Robot.index finds modules, coordinates and the end-effector by name.
+    with pytest.raises(rc.InvalidInputError, match=r"modules\[1\]\.name: ambiguous module name"):
+        rc.Robot([rc.Module("Rz"), rc.Module("Rz", name=name)])
+    assert rc.Robot([rc.Module("Rz"), rc.Module("Rz", name="q2")]).index("q2") == 1
+
+
+def test_index_resolves_every_way_of_naming_a_module(paper_robot):
+    named = paper_robot.with_module(1, paper_robot.modules[1].with_name("shoulder"))
+    assert [named.index(k) for k in (1, "shoulder", "q2", "Q2", "M1", "M3")] == [1, 1, 1, 1, 0, 2]
+    assert named.index("ee", "frame", end_effector=True) == 3
+    with pytest.raises(rc.InvalidInputError, match=r"frame: unknown module 'EE'"):
+        named.index("EE", "frame")
+    with pytest.raises(rc.InvalidInputError, match=r"index: out of range: 3"):
+        named.index(3)

@@ -84,7 +84,7 @@ def test_rejects_2d_axes(paper_robot):
 
 
 def test_rejects_non_flag(paper_robot):
-    with pytest.raises(rc.InvalidInputError, match="frames: not a flag"):
+    with pytest.raises(rc.InvalidInputError, match="frames: not True or False: 'yes'"):
         plot_robot(paper_robot, frames="yes")
 
 

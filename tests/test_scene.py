@@ -206,8 +206,19 @@ def test_update_rejects_bad_q_and_keeps_the_pose(scene: Scene) -> None:
 def test_bad_constructor_arguments_are_named(paper_robot: rc.Robot) -> None:
     with pytest.raises(rc.InvalidInputError, match="robot"):
         Scene("not a robot", channel=RecordingChannel())  # type: ignore[arg-type]
-    with pytest.raises(rc.InvalidInputError, match="height"):
+    with pytest.raises(rc.InvalidInputError, match="height: out of range: 5"):
         Scene(paper_robot, height=5, channel=RecordingChannel())
+    with pytest.raises(rc.InvalidInputError, match="height: not an integer: 420.0"):
+        Scene(paper_robot, height=420.0, channel=RecordingChannel())  # type: ignore[arg-type]
+    with pytest.raises(rc.InvalidInputError, match="labels: not True or False: 'no'"):
+        Scene(paper_robot, labels="no", channel=RecordingChannel())  # type: ignore[arg-type]
+
+
+def test_visibility_switches_take_only_true_or_false(scene: Scene) -> None:
+    with pytest.raises(rc.InvalidInputError, match="visible: not True or False: 1"):
+        scene.show_frames(1)  # type: ignore[arg-type]
+    with pytest.raises(rc.InvalidInputError, match="visible: not True or False: 'off'"):
+        scene.show_labels("off")  # type: ignore[arg-type]
 
 
 def test_animation_tracks_follow_the_motion(scene: Scene, paper_robot: rc.Robot) -> None:
@@ -220,8 +231,12 @@ def test_animation_tracks_follow_the_motion(scene: Scene, paper_robot: rc.Robot)
     positions = np.array(tracks[".position"]["values"]).reshape(-1, 3)
     np.testing.assert_allclose(positions, motion.position[:, -1], atol=1e-5)
     assert scene.channel.ops[-2].content["texts"] == ["M1", "M2", "M3", "EE"]
-    with pytest.raises(rc.InvalidInputError, match="speed"):
+    with pytest.raises(rc.InvalidInputError, match="speed: must be positive: 0.0"):
         scene.animate(motion, speed=0)
+    with pytest.raises(rc.InvalidInputError, match="speed: a boolean is not a number"):
+        scene.animate(motion, speed=True)
+    with pytest.raises(rc.InvalidInputError, match="play: not True or False: 'yes'"):
+        scene.animate(motion, play="yes")  # type: ignore[arg-type]
     with pytest.raises(rc.InvalidInputError, match="motion"):
         scene.animate("not a motion")
 

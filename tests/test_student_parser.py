@@ -205,6 +205,19 @@ def test_huge_or_deep_input_is_rejected_fast(text):
     assert time.perf_counter() - start < 1.0
 
 
+@pytest.mark.parametrize(
+    ("options", "message"),
+    [
+        ({"max_depth": 0}, "max_depth: out of range: 0; allowed: an integer ≥ 1"),
+        ({"max_length": 2.5}, "max_length: not an integer: 2.5"),
+        ({"max_entries": True}, "max_entries: not an integer: True"),
+    ],
+)
+def test_limits_must_be_positive_integers(options, message):
+    with pytest.raises(ValueError, match=message):
+        ParserLimits(**options)
+
+
 def test_limits_are_configurable():
     tight = ParserLimits(max_length=10, max_depth=2, max_exponent=2, max_digits=3, max_entries=2)
     with pytest.raises(ValueError, match="at most 10"):

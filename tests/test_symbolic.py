@@ -213,7 +213,7 @@ def test_error_branches():
     robot = Robot([Module("Rz"), Module("Rz")])
     with pytest.raises(ValueError, match="q: expected shape"):
         symbolic_chain(robot, q=[1, 2, 3])
-    with pytest.raises(ValueError, match="a trajectory is not allowed"):
+    with pytest.raises(ValueError, match=r"q: got a trajectory of shape \(2, 2\)"):
         symbolic_chain(robot, q=[[1, 2], [3, 4]])
 
 
@@ -224,3 +224,48 @@ def test_import_robotconf_stays_numpy_only():
         "assert 'pandas' not in sys.modules"
     )
     subprocess.run([sys.executable, "-c", code], check=True, cwd=".")
+
+
+def test_dh_factor_order_and_joint_parameter_come_from_the_conventions():
+    from robotconf.kinematics import (
+        DH_CONVENTIONS,
+        DH_FACTORS,
+        DH_JOINT_PARAMETER,
+        DH_LENGTHS,
+        MODULE_OFFSETS,
+    )
+
+    for convention in DH_CONVENTIONS:
+        got = [kind for kind, _ in dh_factors(0, 0, 0, 0, convention)]
+        assert got == [kind for kind, _ in DH_FACTORS[convention]]
+    assert DH_JOINT_PARAMETER == {"revolute": "theta", "prismatic": "d"}
+    assert DH_LENGTHS == ("d", "a")
+    assert MODULE_OFFSETS == ("ax", "ay", "az")
+
+
+@pytest.mark.parametrize("kind", ["Rx", "Ry", "Rz"])
+def test_sine_entries_match_the_numpy_kernel(kind):
+    from robotconf.kinematics import kind_axis
+    from robotconf.teaching._symbolic import sine_entries
+
+    minus, plus = sine_entries(kind_axis(kind))
+    matrix = transfer_matrix(kind, 0.3)
+    assert matrix[minus] == pytest.approx(-np.sin(0.3), abs=1e-15)
+    assert matrix[plus] == pytest.approx(np.sin(0.3), abs=1e-15)
+
+
+def test_link_parameters_read_and_replace_by_name():
+    from robotconf.teaching._symbolic import (
+        length_parameters,
+        parameter_value,
+        with_parameter,
+    )
+
+    module = Module("Ry", a=(1, 2, 3))
+    row = DHLink(0.1, 0.2, 0.3, 0.4, "P", "modified", name="j")
+    assert [parameter_value(module, n) for n in ("ax", "ay", "az")] == [1.0, 2.0, 3.0]
+    assert [parameter_value(row, n) for n in ("theta", "d", "a", "alpha")] == [0.1, 0.2, 0.3, 0.4]
+    assert length_parameters(Module("none", a=(1, 0, 0))) == ()
+    assert length_parameters(row) == ("d", "a")
+    assert with_parameter(module, "ay", 5.0) == Module("Ry", a=(1, 5, 3))
+    assert with_parameter(row, "d", 0.7) == DHLink(0.1, 0.7, 0.3, 0.4, "P", "modified", name="j")

@@ -31,7 +31,7 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number
-from ..kinematics import LinkGeometry, link_matrices
+from ..kinematics import JOINT_OF_LETTER, LinkGeometry, link_matrices
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..kinematics import Robot
@@ -207,9 +207,7 @@ def to_urdf(
     joints = _Names(*robot.coordinate_names, "end_effector_joint")
     ET.SubElement(root, "link", name=BASE_LINK)
     parent = BASE_LINK
-    for i, (label, link, g) in enumerate(
-        zip(robot.module_names, robot.modules, robot.geometry(), strict=True)
-    ):
+    for i, (label, g) in enumerate(zip(robot.module_names, robot.geometry(), strict=True)):
         origin, post = _parts(g)
         origin[:3, 3] *= scale
         post[:3, 3] *= scale
@@ -222,10 +220,12 @@ def to_urdf(
         if not moving:
             _joint(root, joint_name, "fixed", parent, frame, origin @ post)
         else:
-            assert g is not None and g.axis is not None  # for mypy: moving says so
-            kind = "revolute" if link.joint_type == "revolute" else "prismatic"
+            assert g is not None and g.axis is not None and g.joint is not None  # moving says so
+            # URDF's joint types are robotconf's words: "revolute", "prismatic".
+            kind = JOINT_OF_LETTER[g.joint]
             joint = _joint(root, joint_name, kind, parent, child, origin)
             ET.SubElement(joint, "axis", xyz=_triple(np.eye(3)[g.axis]))
+            # A stroke is a length and scales; an angle does not.
             lo, hi = limits[i] * (scale if kind == "prismatic" else 1.0)
             ET.SubElement(
                 joint,

@@ -9,6 +9,16 @@ these tables is docs/conventions.md.
 ('Ry', 1, 'revolute')
 >>> dh_formula("modified")
 'Rx(α)·Tx(a)·Rz(θ)·Tz(d)'
+
+The derived tables agree with the factor products they summarize:
+
+>>> [name for kind, name in DH_FACTORS["standard"] if kind in TRANSLATION_KINDS] == list(DH_LENGTHS)
+True
+>>> about_z = [(k, n) for k, n in DH_FACTORS["standard"] if kind_axis(k) == 2]
+>>> {kind_joint_type(k): n for k, n in about_z} == DH_JOINT_PARAMETER
+True
+>>> MODULE_OFFSETS == tuple(f"a{axis}" for axis in AXIS_NAMES)
+True
 """
 
 from __future__ import annotations
@@ -28,6 +38,9 @@ __all__ = [
     "DH_PARAMETERS",
     "DH_FACTORS",
     "DH_SYMBOLS",
+    "DH_LENGTHS",
+    "DH_JOINT_PARAMETER",
+    "MODULE_OFFSETS",
     "kind_joint_type",
     "kind_axis",
     "kind_label",
@@ -78,6 +91,13 @@ DH_FACTORS = {
 }
 #: How a DH parameter is written in formulas.
 DH_SYMBOLS = {"theta": "θ", "d": "d", "a": "a", "alpha": "α"}
+#: The DH parameters that are lengths (those of the translation factors).
+DH_LENGTHS = ("d", "a")
+#: The DH parameter a joint's coordinate adds to: θ for revolute, d for prismatic (both
+#: about or along z, the DH joint axis).
+DH_JOINT_PARAMETER = {"revolute": "theta", "prismatic": "d"}
+#: A module's offsets by name, one per axis.
+MODULE_OFFSETS = ("ax", "ay", "az")
 
 
 def kind_joint_type(kind: str) -> str:

@@ -24,25 +24,56 @@ from typing import Any
 import numpy as np
 
 from .._errors import InvalidInputError
+from ._conventions import (
+    AXIS_NAMES,
+    DH_CONVENTIONS,
+    DH_FACTORS,
+    DH_SYMBOLS,
+    JOINT_LETTERS,
+    ROTATION_KINDS,
+    dh_formula,
+    kind_axis,
+    kind_joint_type,
+)
 from ._dh import DHLink, check_convention, dh_link_from_row
 from ._module import Module
 from ._robot import Robot
 
 __all__ = ["dh_to_modules", "modules_to_dh"]
 
-_PATTERN = {
-    "standard": "per row: joint about/along z, constant Rz/Tz, then constant Tx and Rx "
-    "(standard DH: Rz(θ)·Tz(d)·Tx(a)·Rx(α)); no y, no joint about/along x",
-    "modified": "per row: constant Rx and Tx, then joint about/along z with constant Rz/Tz "
-    "(modified DH: Rx(α)·Tx(a)·Rz(θ)·Tz(d)); no y, no joint about/along x",
+_X, _Y, _Z = (AXIS_NAMES.index(axis) for axis in ("x", "y", "z"))
+#: Each DH parameter's elementary movement type: θ → Rz, d → Tz, a → Tx, α → Rx.
+_FACTOR_KIND = {name: kind for kind, name in DH_FACTORS["standard"]}
+#: A DH row's joint module by joint type: its factor about or along z (Rz or Tz).
+_JOINT_KIND = {
+    kind_joint_type(kind): kind for kind in _FACTOR_KIND.values() if kind_axis(kind) == _Z
 }
+#: The rotation module about each axis index.
+_ROTATION = {kind_axis(kind): kind for kind in ROTATION_KINDS}
+#: Kinds of elementary ops: a turn or a slide (the joint letters), or a constant translation.
+_R, _P, _T = JOINT_LETTERS["revolute"], JOINT_LETTERS["prismatic"], "T"
 
 
-def _constant(
-    kind: str, value: float, symbol: str, owner: str | None, a: Any = (0, 0, 0)
-) -> Module:
-    label = f"{symbol} (constant)" if owner is None else f"{owner}: {symbol} (constant)"
-    return Module(kind, a=a, q=value, name=label)
+def _pattern(convention: str) -> str:
+    """What a chain must look like to become DH rows, read from the convention's factors."""
+    factors = [kind for kind, _ in DH_FACTORS[convention]]
+    about_z = "/".join(kind for kind in factors if kind_axis(kind) == _Z)
+    about_x = " and ".join(kind for kind in factors if kind_axis(kind) == _X)
+    z_part = f"joint about/along z with constant {about_z}"
+    x_part = f"constant {about_x}"
+    first, then = (z_part, x_part) if kind_axis(factors[0]) == _Z else (x_part, z_part)
+    return (
+        f"per row: {first}, then {then} ({convention} DH: {dh_formula(convention)}); "
+        "no y, no joint about/along x"
+    )
+
+
+_PATTERN = {convention: _pattern(convention) for convention in DH_CONVENTIONS}
+
+
+def _constant(parameter: str, value: float, owner: str | None, a: Any = (0, 0, 0)) -> Module:
+    """A rotation module held at a DH row's constant θ or α."""
+    return Module(_FACTOR_KIND[parameter], a=a, q=value, name=_label(DH_SYMBOLS[parameter], owner))
 
 
 def dh_to_modules(row: Any, convention: str | None = None) -> list[Module]:
@@ -86,29 +117,30 @@ def dh_to_modules(row: Any, convention: str | None = None) -> list[Module]:
 def _expand(link: DHLink) -> tuple[list[Module], int]:
     """The modules of a DH link and the position of its joint module among them."""
     theta, d, a, alpha, owner = link.theta, link.d, link.a, link.alpha, link.name
-    kind = "Rz" if link.joint == "R" else "Tz"
+    kind = _JOINT_KIND[link.joint_type]
+    revolute = link.joint_type == "revolute"
     modules: list[Module] = []
     if link.convention == "standard":
         if theta != 0.0:
-            modules.append(_constant("Rz", theta, "θ", owner))
-        joint_offset = (0.0, 0.0, d) if link.joint == "P" else (0.0, 0.0, 0.0)
+            modules.append(_constant("theta", theta, owner))
+        joint_offset = (0.0, 0.0, 0.0) if revolute else (0.0, 0.0, d)
         joint = len(modules)
         modules.append(Module(kind, joint_offset, link.q, owner, link.limits))
-        tail = (a, 0.0, d if link.joint == "R" else 0.0)
+        tail = (a, 0.0, d if revolute else 0.0)
         if alpha != 0.0:
-            modules.append(_constant("Rx", alpha, "α", owner, tail))
+            modules.append(_constant("alpha", alpha, owner, tail))
         elif any(tail):
             modules.append(Module("fixed", tail, name=_label("a, d", owner)))
         return modules, joint
     if alpha != 0.0:
-        modules.append(_constant("Rx", alpha, "α", owner))
-    joint_offset = (a, 0.0, d if link.joint == "P" else 0.0)
+        modules.append(_constant("alpha", alpha, owner))
+    joint_offset = (a, 0.0, 0.0 if revolute else d)
     if theta != 0.0:
-        modules.append(_constant("Rz", theta, "θ", owner, (a, 0.0, 0.0)))
+        modules.append(_constant("theta", theta, owner, (a, 0.0, 0.0)))
         joint_offset = (0.0, 0.0, joint_offset[2])
     joint = len(modules)
     modules.append(Module(kind, joint_offset, link.q, owner, link.limits))
-    if link.joint == "R" and d != 0.0:
+    if revolute and d != 0.0:
         modules.append(Module("fixed", (0.0, 0.0, d), name=_label("d", owner)))
     return modules, joint
 
@@ -141,7 +173,7 @@ def _as_link(row: Any, convention: str | None) -> DHLink:
 class _Op:
     """One elementary transform: a translation vector, or a rotation/slide along an axis."""
 
-    kind: str  # "T": constant translation by `vector`; "R"/"P": rotate/slide along `axis`
+    kind: str  # _T: constant translation by `vector`; _R/_P: rotate/slide along `axis`
     link: int
     axis: int = 2
     value: float = 0.0
@@ -183,12 +215,12 @@ def _ops(robot: Robot, constant: set[int]) -> list[_Op]:
 
 
 def _module_ops(module: Module, index: int, joint: bool) -> list[_Op]:
-    ops = [_Op("T", index, vector=module.a)] if any(module.a) else []
-    if module.is_joint and (joint or module.q != 0.0):
-        revolute = module.joint_type == "revolute"
-        axis = "xyz".index(module.kind[1].lower())
+    ops = [_Op(_T, index, vector=module.a)] if any(module.a) else []
+    axis = kind_axis(module.kind)
+    if axis is not None and (joint or module.q != 0.0):
+        letter = JOINT_LETTERS[module.joint_type]
         # A held slide is just a constant translation; a held turn stays a rotation.
-        kind = ("R" if revolute else "P") if joint else ("R" if revolute else "T")
+        kind = letter if joint or letter == _R else _T
         ops.append(_Op(kind, index, axis, module.q, joint, _axis_vector(axis, module.q)))
     return ops
 
@@ -200,7 +232,7 @@ def _axis_vector(axis: int, value: float) -> tuple[float, float, float]:
 
 
 def _y_problem(op: _Op) -> str:
-    what = {"R": "turns about", "P": "slides along", "T": "is offset along"}[op.kind]
+    what = {_R: "turns about", _P: "slides along", _T: "is offset along"}[op.kind]
     return (
         f"{what} the y axis, but a DH table has no y: every row turns/slides along z and "
         "twists about x"
@@ -208,10 +240,10 @@ def _y_problem(op: _Op) -> str:
 
 
 def _check_axes(op: _Op) -> None:
-    if op.kind == "T" and op.vector[1] != 0.0 or op.kind != "T" and op.axis == 1:
+    if op.kind == _T and op.vector[_Y] != 0.0 or op.kind != _T and op.axis == _Y:
         raise _Misfit(op.link, _y_problem(op))
-    if op.joint and op.axis == 0:
-        what = "turns about" if op.kind == "R" else "slides along"
+    if op.joint and op.axis == _X:
+        what = "turns about" if op.kind == _R else "slides along"
         raise _Misfit(
             op.link, f"is a joint that {what} x, but every DH joint turns about or slides along z"
         )
@@ -220,7 +252,7 @@ def _check_axes(op: _Op) -> None:
 def _feed_standard(row: _Row, op: _Op) -> _Op | None:
     """Absorb ``op`` into a standard row; return what must start the next row."""
     _check_axes(op)
-    if op.kind == "T":
+    if op.kind == _T:
         x, _, z = op.vector
         if row.stage == "Z":
             if x != 0.0 and row.joint is None:
@@ -236,10 +268,10 @@ def _feed_standard(row: _Row, op: _Op) -> _Op | None:
             row.a += x  # Tx commutes with Rx
             if z != 0.0:
                 if row.alpha != 0.0:  # Tz cannot pass the twist: it opens the next row
-                    return _Op("T", op.link, vector=(0.0, 0.0, z))
+                    return _Op(_T, op.link, vector=(0.0, 0.0, z))
                 row.d += z  # …but passes Tx back to the row's Tz(d)
         return None
-    if op.axis == 0:  # a held rotation about x: the twist α
+    if op.axis == _X:  # a held rotation about x: the twist α
         if row.joint is None:
             raise _Misfit(
                 op.link,
@@ -260,7 +292,7 @@ def _feed_standard(row: _Row, op: _Op) -> _Op | None:
 def _feed_modified(row: _Row, op: _Op) -> _Op | None:
     """Absorb ``op`` into a modified (Craig) row; return what must start the next row."""
     _check_axes(op)
-    if op.kind == "T":
+    if op.kind == _T:
         x, _, z = op.vector
         if row.stage == "Z" and x != 0.0:
             if row.joint is None:
@@ -270,12 +302,12 @@ def _feed_modified(row: _Row, op: _Op) -> _Op | None:
                     "before any joint, which modified DH cannot express",
                 )
             row.d += z  # Tz commutes with the row's Rz and Tz
-            return _Op("T", op.link, vector=(x, 0.0, 0.0))
+            return _Op(_T, op.link, vector=(x, 0.0, 0.0))
         row.a += x
         if z != 0.0:
             row.d, row.stage = row.d + z, "Z"
         return None
-    if op.axis == 0:
+    if op.axis == _X:
         if row.stage == "Z":
             if row.joint is None:
                 raise _Misfit(
@@ -296,9 +328,7 @@ def _feed_modified(row: _Row, op: _Op) -> _Op | None:
     return None
 
 
-def modules_to_dh(
-    robot: Robot, convention: str = "standard", *, constant: Iterable[int | str] = ()
-) -> Robot:
+def modules_to_dh(robot: Robot, convention: str = "standard", *, constant: Any = ()) -> Robot:
     """The same robot as a DH table, when its modules follow the DH pattern.
 
     Parameters
@@ -307,9 +337,10 @@ def modules_to_dh(
         Modules (and DH links, which are expanded first); only the active ones count.
     convention : {"standard", "modified"}
         The DH convention of the result.
-    constant : iterable of int or str
-        Modules (0-based index or name) whose coordinate is held: their current ``q`` is
-        a constant rotation or offset, not a joint (as :func:`dh_to_modules` produces).
+    constant : int, str or iterable of them
+        Modules whose coordinate is held, as :meth:`Robot.index` reads them (0-based index,
+        module name or coordinate name): their current ``q`` is a constant rotation or
+        offset, not a joint (as :func:`dh_to_modules` produces).
 
     Returns
     -------
@@ -382,21 +413,11 @@ DHLink(theta=0.0, d=0.0, a=0.0, alpha=0.0, joint='R', convention='standard'))
     return Robot(links, end_effector=point[:3], name=robot.name)
 
 
-def _constant_indices(robot: Robot, constant: Iterable[int | str]) -> set[int]:
-    names = robot.module_names
-    out = set()
-    if isinstance(constant, (str, int)):
-        constant = [constant]
-    for item in constant:
-        if isinstance(item, str) and item in names:
-            out.add(names.index(item))
-        elif isinstance(item, int) and not isinstance(item, bool) and 0 <= item < robot.n:
-            out.add(item)
-        else:
-            raise InvalidInputError(
-                "constant", item, f"module indices 0…{robot.n - 1} or names ({', '.join(names)})"
-            )
-    return out
+def _constant_indices(robot: Robot, constant: Any) -> set[int]:
+    items = (
+        constant if isinstance(constant, Iterable) and not isinstance(constant, str) else [constant]
+    )
+    return {robot.index(item, "constant") for item in items}
 
 
 def _error(robot: Robot, misfit: _Misfit, convention: str) -> InvalidInputError:
@@ -413,10 +434,10 @@ def _error(robot: Robot, misfit: _Misfit, convention: str) -> InvalidInputError:
 def _tail_matrix(ops: list[_Op]) -> np.ndarray:
     matrix = np.eye(4)
     for op in ops:
-        if op.kind == "T":
+        if op.kind == _T:
             matrix = matrix @ Module("fixed", a=op.vector).matrix()
         else:
-            matrix = matrix @ Module("R" + "xyz"[op.axis], q=op.value).matrix()
+            matrix = matrix @ Module(_ROTATION[op.axis], q=op.value).matrix()
     return matrix
 
 
@@ -429,7 +450,7 @@ def _dh_link(robot: Robot, row: _Row, convention: str) -> DHLink:
         row.d,
         row.a,
         row.alpha,
-        "R" if joint.kind == "R" else "P",
+        joint.kind,  # a joint op's kind is its joint letter
         convention,
         q=joint.value,
         name=source.name,

@@ -22,8 +22,8 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 
-from .._errors import InvalidInputError
 from .._validation import check_joint_values
+from ._conventions import JOINT_OF_LETTER
 
 if TYPE_CHECKING:
     from ._robot import Robot
@@ -43,8 +43,9 @@ __all__ = [
 class JointScrew(NamedTuple):
     """The motion axis of one link, in the base frame, over ``T`` samples.
 
-    ``joint`` is ``"R"``, ``"P"`` or ``None`` (inactive, ``none`` or ``fixed`` module:
-    then ``axis`` and ``point`` are ``None``). ``axis`` has shape (3, T) or (3, 1) (unit
+    ``joint`` is the kernel's joint letter (:data:`~robotconf.kinematics.JOINT_LETTERS`:
+    ``"R"``, ``"P"``) or ``None`` (inactive, ``none`` or ``fixed`` module: then ``axis`` and
+    ``point`` are ``None``). ``axis`` has shape (3, T) or (3, 1) (unit
     vector) and ``point`` (3, T) or (3, 1) (length): a point on the joint axis.
     """
 
@@ -118,29 +119,6 @@ def point_names(robot: Robot) -> tuple[str, ...]:
     return (*robot.module_names, "EE")
 
 
-def frame_index(robot: Robot, frame: Any) -> int:
-    """0-based frame index; ``n`` means the end-effector.
-
-    Accepts ``None`` or ``"EE"`` (end-effector), an integer ``0 … n−1`` or a module name
-    (``"M2"``, or the module's own name).
-    """
-    names = robot.module_names
-    allowed = f"None or 'EE' (end-effector), an index 0 to {robot.n - 1}, or one of {names}"
-    if frame is None:
-        return robot.n
-    if isinstance(frame, str):
-        if frame.strip().upper() == "EE":
-            return robot.n
-        if frame in names:
-            return names.index(frame)
-        raise InvalidInputError("frame", frame, allowed, problem="unknown frame")
-    if isinstance(frame, (int, np.integer)) and not isinstance(frame, (bool, np.bool_)):
-        if 0 <= int(frame) < robot.n:
-            return int(frame)
-        raise InvalidInputError("frame", int(frame), allowed, problem="out of range:")
-    raise InvalidInputError("frame", frame, allowed, problem="not a frame:")
-
-
 def cross_components(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Cross product of component-major arrays of shape (3, …)."""
     shape = np.broadcast_shapes(a.shape, b.shape)
@@ -167,8 +145,9 @@ def jacobian(robot: Robot, q: Any = None, frame: Any = None) -> np.ndarray:
         Coordinates (radians for rotations, length for translations); default: the
         modules' own ``q``.
     frame : int, str or None
-        ``None`` or ``"EE"``: the end-effector point; ``0 … n−1`` or a module name such as
-        ``"M2"``: the origin of that module's frame.
+        ``None`` or ``"EE"``: the end-effector point; a module as :meth:`Robot.index` reads
+        it (``0 … n−1``, ``"M2"``, the module's own name or ``"q2"``): the origin of that
+        module's frame.
 
     Returns
     -------
@@ -206,15 +185,17 @@ def jacobian(robot: Robot, q: Any = None, frame: Any = None) -> np.ndarray:
         if q is None
         else check_joint_values(q, robot.n, robot.coordinate_names)
     )
-    index = frame_index(robot, frame)
+    index = robot.n if frame is None else robot.index(frame, "frame", end_effector=True)
     poses = pose_components(robot, values)
     point = ee_position(robot, poses) if index == robot.n else poses[index, :, 3]
     out = np.zeros((6, robot.n, values.shape[0]))
     for j, screw in enumerate(joint_screws(robot, poses)[: index + 1]):
-        if screw.joint == "R":
+        if screw.joint is None:
+            continue
+        if JOINT_OF_LETTER[screw.joint] == "revolute":
             out[:3, j] = cross_components(screw.axis, point - screw.point)  # type: ignore[arg-type]
             out[3:, j] = screw.axis
-        elif screw.joint == "P":
+        else:
             out[:3, j] = screw.axis
     result = np.ascontiguousarray(out.transpose(2, 0, 1))
     return result if batched else result[0]

@@ -26,8 +26,10 @@ class JointAxes(NamedTuple):
     Attributes
     ----------
     joints : tuple of str or None, length n
-        ``"R"`` (revolute), ``"P"`` (prismatic) or ``None`` (no joint: a ``none`` or
-        ``fixed`` module, or a module after the active count).
+        The kernel's joint letters (:data:`~robotconf.kinematics.JOINT_LETTERS`): ``"R"``
+        (revolute), ``"P"`` (prismatic); ``None`` for no joint (a ``none`` or ``fixed``
+        module, or a module after the active count). :data:`JOINT_OF_LETTER` turns a letter
+        back into a joint type.
     point : ndarray, shape (n, 3) or (T, n, 3)
         A point on each axis (length units): where the joint sits before it moves. NaN
         for links without a joint.

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import check_joint_values, check_vector3
+from .._validation import check_configuration, check_integer, check_vector3
 
 if TYPE_CHECKING:  # pragma: no cover
     from ._robot import Robot
@@ -81,12 +81,7 @@ def robot_points(robot: Robot, q: Any = None) -> list[RobotPoint]:
     if not isinstance(robot, Robot):
         raise InvalidInputError("robot", robot, "a robotconf Robot", problem="not a robot:")
     if q is not None:
-        values, batched = check_joint_values(q, robot.n, robot.coordinate_names)
-        if batched:
-            raise InvalidInputError(
-                "q", q, f"one configuration of shape ({robot.n},)", problem="got a trajectory:"
-            )
-        q = values[0]
+        q = check_configuration(q, robot.n, robot.coordinate_names)
     origins = robot.frame_origins(q)
     points = [RobotPoint(name, origins[i]) for i, name in enumerate(robot.module_names)]
     points.append(RobotPoint(END_EFFECTOR_LABEL, robot.end_effector(q)))
@@ -117,15 +112,8 @@ def format_point(name: str, xyz: Any, digits: int = 1) -> str:
     """
     if not isinstance(name, str):
         raise InvalidInputError("name", name, "text", problem="not text:")
-    if isinstance(digits, (bool, np.bool_)) or not isinstance(digits, (int, np.integer)):
-        raise InvalidInputError(
-            "digits", digits, "an integer from 0 to 15", problem="not an integer:"
-        )
-    if not 0 <= int(digits) <= 15:
-        raise InvalidInputError(
-            "digits", int(digits), "an integer from 0 to 15", problem="out of range:"
-        )
+    digits = check_integer(digits, "digits", 0, 15)
     values = check_vector3(xyz, "xyz")
     # round() first, then + 0.0: a tiny negative would otherwise print as "-0.0".
-    shown = ", ".join(f"{round(v, int(digits)) + 0.0:.{int(digits)}f}" for v in values)
+    shown = ", ".join(f"{round(v, digits) + 0.0:.{digits}f}" for v in values)
     return f"{name} ({shown})"

@@ -36,7 +36,24 @@ def _check_links(modules: Any) -> tuple[Link, ...]:
             raise InvalidInputError(
                 f"modules[{i}]", link, "a Module or DHLink", problem="not a link:"
             )
+        _check_module_name(link.name, i, len(links))
     return links
+
+
+def _check_module_name(name: str | None, i: int, n: int) -> None:
+    # A module, its coordinate and the end-effector are all found by name (Robot.index), so
+    # a module may not take the end-effector's name or another module's coordinate name.
+    if name is None:
+        return
+    label = name.strip().lower()
+    other_coordinate = label in {f"q{k + 1}" for k in range(n)} - {f"q{i + 1}"}
+    if label == "ee" or other_coordinate:
+        raise InvalidInputError(
+            f"modules[{i}].name",
+            name,
+            f"a name other than 'EE' and the coordinate names q1 to q{n} (q{i + 1} is fine)",
+            problem="ambiguous module name",
+        )
 
 
 class Robot:
@@ -279,7 +296,8 @@ class Robot:
         ----------
         key : int or str
             A 0-based index ``0 … n−1``; a module's display name (``"M2"``, or its own
-            name); or a coordinate name (``"q2"``, any case). Module names are tried first.
+            name); or a coordinate name (``"q2"``, any case). A module may not be named
+            after another module's coordinate or ``"EE"``, so no key means two things.
         field : str
             Name used in the error message.
         end_effector : bool
@@ -586,7 +604,7 @@ class Robot:
         self,
         *,
         signals: Mapping[str, Signal] | None = None,
-        simulation: Mapping[str, Any] | None = None,
+        simulation: Any = None,
         indent: int | None = 2,
     ) -> str:
         """The robot (and optional signals and run settings) as robotconf JSON text.
@@ -638,7 +656,7 @@ class Robot:
         path: str | os.PathLike[str],
         *,
         signals: Mapping[str, Signal] | None = None,
-        simulation: Mapping[str, Any] | None = None,
+        simulation: Any = None,
     ) -> Path:
         """Write :meth:`to_json` to ``path`` (UTF-8) and return the path.
 

@@ -1,4 +1,4 @@
-"""The configurator panel: build, move and analyse a robot from widgets (issue 6).
+"""The configurator panel: build, move and analyse a robot from widgets.
 
 Presentation only: every number on screen comes from one core call (``rc.Robot``,
 ``rc.derivation``, ``rc.simulate``, the signals), and every bad input shows the core's

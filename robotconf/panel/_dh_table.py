@@ -10,18 +10,36 @@ import ipywidgets as widgets
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number
-from ..kinematics import DH_CONVENTIONS, DHLink
+from ..kinematics import (
+    DH_CONVENTIONS,
+    DH_FACTORS,
+    DH_PARAMETERS,
+    DH_SYMBOLS,
+    JOINT_LETTERS,
+    JOINT_OF_LETTER,
+    JOINT_UNITS,
+    ROTATION_KINDS,
+    DHLink,
+    dh_formula,
+)
 from ._errors_display import ErrorLabel
 from ._number_control import NumberControl
-from ._ranges import q_range
+from ._ranges import q_display, q_range
 from ._row_list import ChangeCallback, RowList
 
 __all__ = ["DHTable", "DHRow"]
 
-_CONVENTION_TIPS = (
-    "standard (paper eq. 9): A = Rz(θ)·Tz(d)·Tx(a)·Rx(α)",
-    "modified (Craig): A = Rx(α)·Tx(a)·Rz(θ)·Tz(d); row i holds α(i-1), a(i-1)",
-)
+#: Where each convention comes from, and how its rows are read.
+_CONVENTION_SOURCES = {
+    "standard": ("paper eq. 9", ""),
+    "modified": ("Craig", "; row i holds α(i-1), a(i-1)"),
+}
+_CONVENTION_TIPS = {
+    name: f"{name} ({source}): A = {dh_formula(name)}{reading}"
+    for name, (source, reading) in _CONVENTION_SOURCES.items()
+}
+#: The DH parameters that are angles (those of the rotation factors): θ and α.
+_ANGLES = frozenset(name for kind, name in DH_FACTORS["standard"] if kind in ROTATION_KINDS)
 
 
 def _empty_table_message() -> str:
@@ -38,7 +56,7 @@ def _empty_table_message() -> str:
 class DHRow:
     """One DH row: θ, d, a, α boxes, joint type R/P, and its coordinate q."""
 
-    FIELDS = ("theta", "d", "a", "alpha")
+    FIELDS = DH_PARAMETERS
 
     def __init__(
         self,
@@ -54,14 +72,13 @@ class DHRow:
         self._on_change = on_change
         self.title = widgets.HTML(layout=widgets.Layout(width="30px"))
         self.error = ErrorLabel()
-        labels = {"theta": "θ", "d": "d", "a": "a", "alpha": "α"}
         self.cells = {
             name: NumberControl(
-                labels[name],
+                DH_SYMBOLS[name],
                 getattr(link, name),
                 -scale,
                 scale,
-                angle=name in ("theta", "alpha"),
+                angle=name in _ANGLES,
                 degrees=degrees,
                 slider=False,
                 on_change=lambda _: on_change("link"),
@@ -70,21 +87,22 @@ class DHRow:
             for name in self.FIELDS
         }
         self.joint = widgets.Dropdown(
-            options=(("R", "R"), ("P", "P")),
+            options=tuple((letter, letter) for letter in JOINT_LETTERS.values()),
             value=link.joint,
             tooltip="R: q adds to θ (revolute); P: q adds to d (prismatic)",
             layout=widgets.Layout(width="52px"),
         )
         self.joint.observe(self._joint_changed, "value")
         lo, hi = q_range(link.unit, scale, limits, degrees)
+        angle, label = q_display(link.unit)
         self.q = NumberControl(
             "q",
             link.q,
             lo,
             hi,
-            angle=link.joint == "R",
+            angle=angle,
             degrees=degrees,
-            unit="" if link.joint == "R" else "length",
+            unit=label,
             on_change=lambda _: on_change("q"),
             label_width="16px",
         )
@@ -150,9 +168,10 @@ class DHRow:
         return link
 
     def _joint_changed(self, change: dict[str, Any]) -> None:
-        unit = "rad" if change["new"] == "R" else "length"
+        unit = JOINT_UNITS[JOINT_OF_LETTER[change["new"]]]
         lo, hi = q_range(unit, self._scale, None, self.q.degrees)
-        self.q.set_angle(unit == "rad", lo, hi, unit="" if unit == "rad" else "length")
+        angle, label = q_display(unit)
+        self.q.set_angle(angle, lo, hi, unit=label)
         self._on_change("link")
 
 
@@ -175,7 +194,7 @@ class DHTable(RowList):
             options=DH_CONVENTIONS,
             value="standard",
             description="convention",
-            tooltips=list(_CONVENTION_TIPS),
+            tooltips=[_CONVENTION_TIPS[name] for name in DH_CONVENTIONS],
             style={"button_width": "90px"},
         )
         self.convention_note = widgets.HTML()
@@ -191,7 +210,7 @@ class DHTable(RowList):
         self._show_note()
 
     def _show_note(self) -> None:
-        tip = _CONVENTION_TIPS[DH_CONVENTIONS.index(self.convention.value)]
+        tip = _CONVENTION_TIPS[self.convention.value]
         self.convention_note.value = f"<small>{tip}</small>"
 
     def _row(self, link: DHLink, limits: Any = None) -> DHRow:

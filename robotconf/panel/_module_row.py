@@ -9,19 +9,28 @@ import ipywidgets as widgets
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number
-from ..kinematics import MODULE_KINDS, Link, Module
+from ..kinematics import (
+    JOINT_UNITS,
+    MODULE_KINDS,
+    MODULE_OFFSETS,
+    Link,
+    Module,
+    kind_joint_type,
+    kind_label,
+)
 from ._errors_display import ErrorLabel
 from ._number_control import NumberControl
-from ._ranges import q_range
+from ._ranges import q_display, q_range
 
 __all__ = ["ModuleRow", "KIND_OPTIONS"]
 
 #: Dropdown entries: the paper's codes 0–6 with names, then ``fixed`` (no code).
-KIND_OPTIONS = tuple((f"{code} {name}", name) for code, name in enumerate(MODULE_KINDS[:7])) + (
-    ("fixed", "fixed"),
-)
+KIND_OPTIONS = tuple((kind_label(kind), kind) for kind in MODULE_KINDS)
 
-_UNIT = {"Rx": "rad", "Ry": "rad", "Rz": "rad", "Tx": "length", "Ty": "length", "Tz": "length"}
+
+def _unit(kind: str) -> str:
+    """The unit of a movement type's coordinate: ``rad``, ``length`` or none."""
+    return JOINT_UNITS[kind_joint_type(kind)]
 
 
 def _button(icon: str, tooltip: str) -> widgets.Button:
@@ -69,9 +78,11 @@ class ModuleRow:
         on_action: Callable[[ModuleRow, str], None],
     ):
         self._base = link
+        # A module is edited field by field; any other link (a DH row) only through its q.
+        self._module: Module | None = link if isinstance(link, Module) else None
         self._scale = scale
         self._on_change = on_change
-        self.is_module = isinstance(link, Module)
+        self.is_module = self._module is not None
         self.title = widgets.HTML(layout=widgets.Layout(width="36px"))
         self.error = ErrorLabel()
         self.up_button = _button("arrow-up", "move this module up (towards the base)")
@@ -85,12 +96,12 @@ class ModuleRow:
             button.on_click(lambda _, action=action: on_action(self, action))
         self.kind = widgets.Dropdown(
             options=KIND_OPTIONS,
-            value=link.kind if isinstance(link, Module) else "none",
+            value="none" if self._module is None else self._module.kind,
             description="type",
             layout=widgets.Layout(width="150px"),
             style={"description_width": "34px"},
         )
-        a = link.a if isinstance(link, Module) else (0.0, 0.0, 0.0)
+        a = (0.0, 0.0, 0.0) if self._module is None else self._module.a
         self.offsets = tuple(
             NumberControl(
                 name,
@@ -101,18 +112,18 @@ class ModuleRow:
                 on_change=self._link_changed,
                 label_width="24px",
             )
-            for name, value in zip(("ax", "ay", "az"), a, strict=True)
+            for name, value in zip(MODULE_OFFSETS, a, strict=True)
         )
-        unit: str = link.unit  # type: ignore[attr-defined]
-        lo, hi = q_range(unit, scale, limits, degrees)
+        lo, hi = q_range(link.unit, scale, limits, degrees)
+        angle, label = q_display(link.unit)
         self.q = NumberControl(
             "q",
             link.q,
             lo,
             hi,
-            angle=unit == "rad",
+            angle=angle,
             degrees=degrees,
-            unit="length" if unit == "length" else "",
+            unit=label,
             on_change=self._q_changed,
             label_width="24px",
         )
@@ -149,7 +160,7 @@ class ModuleRow:
     def controls(self) -> Iterator[tuple[str, NumberControl]]:
         """``(field, control)`` for the number controls of this row."""
         if self.is_module:
-            yield from zip(("ax", "ay", "az"), self.offsets, strict=True)
+            yield from zip(MODULE_OFFSETS, self.offsets, strict=True)
         yield "q", self.q
 
     def error_items(self, prefix: str) -> Iterator[tuple[str, ErrorLabel]]:
@@ -178,21 +189,20 @@ class ModuleRow:
         q = self.q.core_value
         try:
             if not self.is_module:
-                link = self._base.with_q(q)  # type: ignore[attr-defined]
+                link = self._base.with_q(q)
             else:
                 a = tuple(c.core_value for c in self.offsets)
-                link = self._module(self.kind.value, a, q)
+                link = self._changed_module(self.kind.value, a, q)
         except InvalidInputError as error:
             self.error.show(str(error))
             return None
         self.error.clear()
         return link
 
-    def _module(self, kind: str, a: tuple[float, ...], q: float) -> Module:
-        base = self._base
-        assert isinstance(base, Module)
+    def _changed_module(self, kind: str, a: tuple[float, ...], q: float) -> Module:
+        assert self._module is not None  # only module rows have a kind and offsets
         # The core's with_kind keeps name and limits (dropping limits across joint types).
-        return base.with_kind(kind).with_a(a).with_q(q)
+        return self._module.with_kind(kind).with_a(a).with_q(q)
 
     # -- events -------------------------------------------------------------------------
 
@@ -203,10 +213,11 @@ class ModuleRow:
         self.q.disable(kind in ("none", "fixed"))
 
     def _kind_changed(self, change: dict[str, Any]) -> None:
-        old, new = _UNIT.get(change["old"], ""), _UNIT.get(change["new"], "")
+        old, new = _unit(change["old"]), _unit(change["new"])
         if old != new and new:
             lo, hi = q_range(new, self._scale, None, self.q.degrees)
-            self.q.set_angle(new == "rad", lo, hi, unit="length" if new == "length" else "")
+            angle, label = q_display(new)
+            self.q.set_angle(angle, lo, hi, unit=label)
         self._update_disabled()
         self._on_change(self, "link")
 

@@ -7,7 +7,12 @@ from typing import Any
 
 import numpy as np
 
-__all__ = ["length_scale", "nice_ceiling", "q_range", "joint_limits"]
+from ..kinematics import JOINT_UNITS
+
+__all__ = ["length_scale", "nice_ceiling", "q_range", "q_display", "joint_limits"]
+
+#: The units a coordinate has (a link's ``unit``): an angle or a length.
+ANGLE_UNIT, LENGTH_UNIT = JOINT_UNITS["revolute"], JOINT_UNITS["prismatic"]
 
 
 def nice_ceiling(value: float) -> float:
@@ -55,7 +60,7 @@ def q_range(
     Parameters
     ----------
     unit : {"rad", "length", ""}
-        The link's ``unit``.
+        The link's ``unit`` (:data:`~robotconf.kinematics.JOINT_UNITS`).
     scale : float
         Half-range for lengths (see :func:`length_scale`).
     limits : (lo, hi) or None
@@ -70,9 +75,21 @@ def q_range(
     """
     if limits is not None and np.all(np.isfinite(limits)) and limits[1] > limits[0]:
         lo, hi = float(limits[0]), float(limits[1])
-        if unit == "rad" and degrees:
+        if unit == ANGLE_UNIT and degrees:
             return float(np.rad2deg(lo)), float(np.rad2deg(hi))
         return lo, hi
-    if unit == "rad":
+    if unit == ANGLE_UNIT:
         return (-180.0, 180.0) if degrees else (-round(math.pi, 4), round(math.pi, 4))
     return -scale, scale
+
+
+def q_display(unit: str) -> tuple[bool, str]:
+    """How a coordinate control shows a link's ``unit``: (is an angle, unit label).
+
+    An angle's label comes from the degrees/radians switch, so its own label is empty; a
+    length is labelled ``length``; a link without a joint has neither.
+
+    >>> q_display("rad"), q_display("length"), q_display("")
+    ((True, ''), (False, 'length'), (False, ''))
+    """
+    return unit == ANGLE_UNIT, unit if unit == LENGTH_UNIT else ""

@@ -57,7 +57,7 @@ def default_scene_factory(height: int = 420) -> Callable[[Any], Any]:
 
     def factory(robot: Any) -> Any:
         try:
-            from ..scene import Scene  # type: ignore[attr-defined]  # lands with issue 5
+            from ..scene import Scene
         except ImportError as error:  # the scene is optional for every other feature
             return PlaceholderScene(robot, str(error))
         return Scene(robot, robot.q, height=height)

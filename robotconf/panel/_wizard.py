@@ -15,25 +15,48 @@ import ipywidgets as widgets
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number
-from ..kinematics import Module, Robot
+from ..kinematics import (
+    AXIS_NAMES,
+    JOINT_UNITS,
+    MODULE_KINDS,
+    MODULE_OFFSETS,
+    Module,
+    Robot,
+    kind_axis,
+    kind_joint_type,
+)
 from ._errors_display import ErrorLabel
 from ._matrices_view import end_effector_text
 from ._module_row import KIND_OPTIONS
 from ._number_control import NumberControl
+from ._ranges import q_display
 
 __all__ = ["Wizard", "KIND_EXPLANATIONS"]
 
-#: One line per movement type, as a teacher would say it.
-KIND_EXPLANATIONS = {
+#: How a joint moves by q, and what q then is, by joint type.
+_MOTIONS = {
+    "revolute": ("rotate by q about", "an angle"),
+    "prismatic": ("slide by q along", "a length"),
+}
+#: What the movement types without a joint are.
+_NO_JOINT = {
     "none": "The null module: an identity matrix, it changes nothing (an unused block).",
-    "Rx": "Shift by a in the previous frame, then rotate by q about the module's own x axis.",
-    "Ry": "Shift by a in the previous frame, then rotate by q about the module's own y axis.",
-    "Rz": "Shift by a in the previous frame, then rotate by q about the module's own z axis.",
-    "Tx": "Shift by a in the previous frame, then slide by q along the module's own x axis.",
-    "Ty": "Shift by a in the previous frame, then slide by q along the module's own y axis.",
-    "Tz": "Shift by a in the previous frame, then slide by q along the module's own z axis.",
     "fixed": "A rigid offset a with no joint (a base or tool frame; not in the paper).",
 }
+
+
+def _explanation(kind: str) -> str:
+    axis = kind_axis(kind)
+    if axis is None:
+        return _NO_JOINT[kind]
+    motion = _MOTIONS[kind_joint_type(kind)][0]
+    return (
+        f"Shift by a in the previous frame, then {motion} the module's own {AXIS_NAMES[axis]} axis."
+    )
+
+
+#: One line per movement type, as a teacher would say it.
+KIND_EXPLANATIONS = {kind: _explanation(kind) for kind in MODULE_KINDS}
 _MAX_MODULES = 12
 
 
@@ -45,7 +68,7 @@ def _formula(kind: str, index: int, a: Any = None) -> str:
 
     q = sympy.Symbol(f"q{index}", real=True)
     if a is None:
-        offsets = sympy.symbols("a_x a_y a_z", real=True)
+        offsets = sympy.symbols([f"a_{axis}" for axis in AXIS_NAMES], real=True)
     else:
         offsets = tuple(exact_number(v) for v in a)
     return f"$$A_{{{index}}} = {sympy.latex(module_matrix(kind, q, offsets))}$$"
@@ -56,9 +79,7 @@ class _ModuleAnswers:
 
     def __init__(self, degrees: bool, scale: float):
         self.kind = widgets.Dropdown(options=KIND_OPTIONS, value="Rz", description="type")
-        self.offsets = [
-            NumberControl(n, 0.0, -scale, scale, slider=False) for n in ("ax", "ay", "az")
-        ]
+        self.offsets = [NumberControl(n, 0.0, -scale, scale, slider=False) for n in MODULE_OFFSETS]
         self.q = NumberControl("q", 0.0, -180, 180, angle=True, degrees=degrees, slider=False)
 
     def module(self) -> Module:
@@ -177,8 +198,10 @@ class Wizard:
                 self._say(text, [c.widget for c in answers.offsets])
                 self._show_formula(kind, i + 1, [c.core_value for c in answers.offsets])
             else:
-                unit = {"R": "an angle", "T": "a length"}.get(kind[0], "ignored by this type")
-                answers.q.set_angle(kind[0] == "R", -180, 180, unit="" if kind[0] == "R" else "")
+                joint_type = kind_joint_type(kind)
+                unit = _MOTIONS[joint_type][1] if joint_type in _MOTIONS else "ignored by this type"
+                angle, label = q_display(JOINT_UNITS[joint_type])
+                answers.q.set_angle(angle, -180, 180, unit=label)
                 text = f"Module {i + 1} ({kind}): its coordinate q, {unit} (0 = parking position)."
                 self._say(text, [answers.q.widget])
                 self._show_formula(kind, i + 1, [c.core_value for c in answers.offsets])
@@ -210,7 +233,7 @@ class Wizard:
         part, i = self._steps()[self.step]
         controls: list[tuple[str, NumberControl]] = []
         if part == "a":
-            controls = list(zip(("ax", "ay", "az"), self.answers[i].offsets, strict=True))
+            controls = list(zip(MODULE_OFFSETS, self.answers[i].offsets, strict=True))
         elif part == "q":
             controls = [("q", self.answers[i].q)]
         elif part == "end_effector":
@@ -271,7 +294,7 @@ class Wizard:
         """``(key, label)``: ``wizard`` and ``wizard.<field>`` of the visible step."""
         yield "wizard", self.error
         for i, answers in enumerate(self.answers):
-            for name, control in zip(("ax", "ay", "az"), answers.offsets, strict=True):
+            for name, control in zip(MODULE_OFFSETS, answers.offsets, strict=True):
                 yield f"wizard.modules[{i}].{name}", control.error
             yield f"wizard.modules[{i}].q", answers.q.error
         for name, control in zip(("Px", "Py", "Pz"), self.end_effector, strict=True):

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING
 
+from ..kinematics import JOINT_UNITS
 from ._figures import new_figure
 
 if TYPE_CHECKING:
@@ -44,7 +45,7 @@ def plot_coordinates(motion: Motion, length_unit: str = "length") -> Figure:
     for ax, name in zip(axes, names, strict=True):
         i = robot.index(name)
         unit = robot.modules[i].unit
-        unit = length_unit if unit == "length" else unit
+        unit = length_unit if unit == JOINT_UNITS["prismatic"] else unit
         ax.plot(motion.t, motion.q[:, i], lw=1.4)
         ax.set_ylabel(f"{name} [{unit}]" if unit else name)
         signal = motion.signals.get(name)

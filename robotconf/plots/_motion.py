@@ -10,7 +10,7 @@ from typing import TYPE_CHECKING
 
 import numpy as np
 
-from .._errors import InvalidInputError
+from ..kinematics import AXIS_NAMES
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -54,7 +54,7 @@ def kink_note(motion: Motion) -> str | None:
 
 def plot_motion(
     motion: Motion,
-    point: str = "EE",
+    point: str | int = "EE",
     *,
     displacement: bool = False,
     length_unit: str = "length",
@@ -65,8 +65,9 @@ def plot_motion(
     Parameters
     ----------
     motion : Motion
-    point : str
-        ``"EE"`` or a module name such as ``"M2"``.
+    point : str or int
+        ``"EE"`` or a module frame's origin, as :meth:`Robot.index` reads it (``"M2"``,
+        the module's own name, ``"q2"`` or the index ``1``).
     displacement : bool
         First row shows displacement (position minus position at ``t0``) instead of
         position.
@@ -99,9 +100,8 @@ def plot_motion(
     """
     from ._figures import new_figure
 
-    if point not in motion.points:
-        raise InvalidInputError("point", point, f"one of {motion.points}", problem="unknown point")
-    index = motion.points.index(point)
+    index = motion.robot.index(point, "point", end_effector=True)
+    point = motion.points[index]
     first = "displacement" if displacement else "position"
     rows = (
         (first, getattr(motion, first), length_unit),
@@ -114,7 +114,7 @@ def plot_motion(
     t = motion.t
     kinks = np.unique(np.concatenate([np.empty(0), *motion.kinks().values()]))
     for r, (name, values, unit) in enumerate(rows):
-        for c, axis in enumerate("xyz"):
+        for c, axis in enumerate(AXIS_NAMES):
             ax = axes[r, c]
             ax.plot(t, values[:, index, c], lw=1.2)
             ax.grid(True, alpha=0.3)

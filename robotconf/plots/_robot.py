@@ -13,7 +13,8 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .._errors import InvalidInputError
-from ..kinematics import format_point, robot_points
+from .._validation import check_flag
+from ..kinematics import AXIS_NAMES, format_point, robot_points
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -27,12 +28,6 @@ MODULE_COLOR = "tab:green"
 EE_COLOR = "tab:red"
 #: Frame triad colours for the x, y and z axes (the usual RGB convention).
 TRIAD_COLORS = ("tab:red", "tab:green", "tab:blue")
-
-
-def _check_flag(value: Any, field: str) -> bool:
-    if not isinstance(value, (bool, np.bool_)):
-        raise InvalidInputError(field, value, "True or False", problem="not a flag:")
-    return bool(value)
 
 
 def _coincident(points: list[Any], tolerance: float) -> list[tuple[list[str], np.ndarray]]:
@@ -103,8 +98,8 @@ def plot_robot(
     >>> [text.get_text() for text in fig.axes[0].texts][-1]
     'EE (70.0, 0.0, 20.0)'
     """
-    labels = _check_flag(labels, "labels")
-    frames = _check_flag(frames, "frames")
+    labels = check_flag(labels, "labels")
+    frames = check_flag(frames, "frames")
     points = robot_points(robot, q)
     if ax is None:
         from ._figures import new_figure
@@ -134,7 +129,7 @@ def plot_robot(
         size = 0.15 * 2 * half
         named = [("T0", np.eye(4)), *zip(robot.module_names, poses, strict=True)]
         for name, pose in named:
-            for k, axis in enumerate("xyz"):
+            for k, axis in enumerate(AXIS_NAMES):
                 tip = pose[:3, 3] + size * pose[:3, k]
                 segment = np.array([pose[:3, 3], tip])
                 ax.plot(*segment.T, color=TRIAD_COLORS[k], lw=1.5, label=f"frame {name} {axis}")

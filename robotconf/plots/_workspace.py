@@ -9,7 +9,8 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .._errors import InvalidInputError
+from .._validation import check_integer
+from ..kinematics import AXIS_NAMES
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -60,13 +61,10 @@ def plot_workspace(
     """
     from ._figures import new_figure
 
-    if isinstance(max_points, bool) or not isinstance(max_points, (int, np.integer)):
-        raise InvalidInputError("max_points", max_points, "an integer ≥ 1")
-    if max_points < 1:
-        raise InvalidInputError("max_points", max_points, "an integer ≥ 1")
-    step = max(1, -(-len(ws) // int(max_points)))
+    max_points = check_integer(max_points, "max_points", 1)
+    step = max(1, -(-len(ws) // max_points))
     shown = ws.points[::step]
-    labels = [f"{axis} [{length_unit}]" for axis in "xyz"]
+    labels = [f"{axis} [{length_unit}]" for axis in AXIS_NAMES]
     fig = new_figure(figsize)
     ax3d = fig.add_subplot(2, 2, 1, projection="3d")
     ax3d.scatter(shown[:, 0], shown[:, 1], shown[:, 2], s=1, color=color, alpha=0.3)

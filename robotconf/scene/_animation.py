@@ -11,6 +11,7 @@ from typing import Any
 import numpy as np
 
 from .._errors import InvalidInputError
+from .._validation import check_finite_number, check_flag, check_joint_values
 from ._drawing import RobotDrawing
 from ._placement import quaternions
 
@@ -45,18 +46,19 @@ def animation_command(
     q = getattr(motion, "q", None)
     if t is None or q is None:
         raise InvalidInputError("motion", motion, "a Motion from robotconf.simulate")
-    q = np.asarray(q, dtype=float)
-    if q.ndim != 2 or q.shape[1] != drawing.robot.n:
+    robot = drawing.robot
+    q, batched = check_joint_values(q, robot.n, robot.coordinate_names, "motion.q")
+    if not batched:
         raise InvalidInputError(
-            "motion",
-            f"q of shape {q.shape}",
-            f"a motion of this robot's {drawing.robot.n} coordinates",
+            "motion.q", f"shape {q.shape[1:]}", f"a motion of this robot's {robot.n} coordinates"
         )
-    if isinstance(speed, bool) or not np.isfinite(speed) or speed <= 0:
-        raise InvalidInputError("speed", speed, "a finite number > 0")
+    speed = check_finite_number(speed, "speed")
+    if speed <= 0:
+        raise InvalidInputError("speed", speed, "a finite number > 0", problem="must be positive:")
+    play = check_flag(play, "play")
     t = np.asarray(t, dtype=float)
     keep = np.unique(np.linspace(0, len(t) - 1, min(len(t), MAX_FRAMES)).round().astype(int))
-    times = ((t[keep] - t[0]) / float(speed)).tolist()
+    times = ((t[keep] - t[0]) / speed).tolist()
     placement = drawing.placements(q[keep])
     quats = quaternions(placement.rotation)
     animations = []
@@ -72,7 +74,7 @@ def animation_command(
     return {
         "type": "set_animation",
         "animations": animations,
-        "options": {"play": bool(play), "repetitions": 1},
+        "options": {"play": play, "repetitions": 1},
     }
 
 

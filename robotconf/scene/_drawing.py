@@ -15,7 +15,7 @@ from typing import Any
 import numpy as np
 
 from .._validation import check_joint_values
-from ..kinematics import END_EFFECTOR_LABEL, Robot, format_point, joint_axes
+from ..kinematics import END_EFFECTOR_LABEL, JOINT_OF_LETTER, Robot, format_point, joint_axes
 from ._placement import Placement, align_y, segment_placement
 
 __all__ = ["DrawnItem", "RobotDrawing", "robot_size", "COLORS"]
@@ -32,6 +32,9 @@ COLORS = {
 
 #: Sizes relative to the robot's size (:func:`robot_size`).
 SPHERE_RADIUS = 0.035
+#: The marker of a joint by joint type: a drum on a revolute axis, a bar along a prismatic
+#: one; (shape, size relative to the sphere radius).
+JOINT_MARKERS = {"revolute": ("cylinder", 0.6), "prismatic": ("box", 0.5)}
 LINK_RADIUS = 0.012
 TRIAD_LENGTH = 0.12
 LABEL_HEIGHT = 0.05
@@ -109,31 +112,20 @@ class RobotDrawing:
         self.structure = structure_key(robot)
         joints = joint_axes(robot).joints
         self.joints = joints
+        #: Each link's joint type, or None where nothing moves (inactive, none, fixed).
+        self.joint_types = tuple(None if j is None else JOINT_OF_LETTER[j] for j in joints)
         names = [*robot.module_names, END_EFFECTOR_LABEL]
         self.point_names = names
         items = [DrawnItem("base/frame", "triad", 2 * TRIAD_LENGTH * size, 0)]
         for i in range(robot.n):
             items.append(DrawnItem(f"links/{i}", "cylinder", LINK_RADIUS * size, COLORS["link"]))
-            color = COLORS["joint"] if joints[i] else COLORS["passive"]
+            joint_type = self.joint_types[i]
+            color = COLORS["passive"] if joint_type is None else COLORS["joint"]
             items.append(DrawnItem(f"modules/{i}/sphere", "sphere", SPHERE_RADIUS * size, color))
-            if joints[i] == "R":
-                items.append(
-                    DrawnItem(
-                        f"modules/{i}/joint",
-                        "cylinder",
-                        0.6 * SPHERE_RADIUS * size,
-                        COLORS["revolute"],
-                    )
-                )
-            elif joints[i] == "P":
-                items.append(
-                    DrawnItem(
-                        f"modules/{i}/joint",
-                        "box",
-                        0.5 * SPHERE_RADIUS * size,
-                        COLORS["prismatic"],
-                    )
-                )
+            if joint_type is not None:
+                shape, factor = JOINT_MARKERS[joint_type]
+                marker = factor * SPHERE_RADIUS * size
+                items.append(DrawnItem(f"modules/{i}/joint", shape, marker, COLORS[joint_type]))
             items.append(DrawnItem(f"modules/{i}/frame", "triad", TRIAD_LENGTH * size, 0, "frames"))
             items.append(DrawnItem(f"modules/{i}/label", "label", LABEL_HEIGHT * size, 0, "labels"))
         items.append(DrawnItem("ee/link", "cylinder", LINK_RADIUS * size, COLORS["link"]))
@@ -177,7 +169,7 @@ class RobotDrawing:
         for i in range(n):
             put(f"links/{i}", segment_placement(previous, origins[:, i], tiny))
             position[:, self._index[f"modules/{i}/sphere"]] = origins[:, i]
-            if self.joints[i] is not None:
+            if self.joint_types[i] is not None:
                 put(f"modules/{i}/joint", self._joint_placement(axes, origins, i, tiny))
             k = self._index[f"modules/{i}/frame"]
             position[:, k] = origins[:, i]
@@ -193,7 +185,7 @@ class RobotDrawing:
 
     def _joint_placement(self, axes: Any, origins: np.ndarray, i: int, tiny: float) -> Placement:
         direction = axes.direction[:, i]
-        if self.joints[i] == "R":
+        if self.joint_types[i] == "revolute":
             # A short drum on the axis, centred where the frame is drawn.
             length = 3.0 * SPHERE_RADIUS * self.size
             scale = np.broadcast_to([1.0, length, 1.0], origins[:, i].shape)

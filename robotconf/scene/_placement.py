@@ -12,9 +12,6 @@ import numpy as np
 
 __all__ = ["Placement", "align_y", "compose", "quaternions", "segment_placement"]
 
-#: Below this length (relative to the robot's size) a segment is drawn as nothing.
-ZERO_LENGTH = 1e-9
-
 
 class Placement:
     """Positions (…, 3), rotations (…, 3, 3) and scales (…, 3) of drawn items.

@@ -13,7 +13,7 @@ from typing import Any
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import check_joint_values
+from .._validation import check_configuration, check_flag, check_integer
 from ..kinematics import Robot
 from ._animation import animation_command
 from ._commands import (
@@ -85,8 +85,9 @@ class Scene:
         max_rate: float | None = 60.0,
     ) -> None:
         _check_robot(robot)
-        if isinstance(height, bool) or not isinstance(height, int) or not 100 <= height <= 4000:
-            raise InvalidInputError("height", height, "an integer from 100 to 4000 (pixels)")
+        height = check_integer(height, "height", 100, 4000, "an integer from 100 to 4000 (pixels)")
+        self._labels_on = check_flag(labels, "labels")
+        self._frames_on = check_flag(frames, "frames")
         self.height = height
         self._log = SceneLog()
         self._widget = None
@@ -96,8 +97,6 @@ class Scene:
             self._widget = SceneWidget(height=height, code=shared_code())
             channel = WidgetChannel(self._widget, self._log.ops, max_rate=max_rate)
         self.channel = channel
-        self._labels_on = bool(labels)
-        self._frames_on = bool(frames)
         self._shown_labels: list[str] = []
         self._drawing: RobotDrawing | None = None
         self._shown_in_cell: int | None = None
@@ -144,6 +143,11 @@ class Scene:
         ----------
         q : array-like, shape (n,)
             Radians for rotations, length units for translations.
+
+        Raises
+        ------
+        InvalidInputError
+            For a bad ``q``, or a trajectory of shape (T, n): :meth:`animate` plays a motion.
         """
         drawing = self._require_drawing()
         values = self._values(self.robot, q)
@@ -162,14 +166,14 @@ class Scene:
 
     def show_frames(self, visible: bool = True) -> None:
         """Show or hide the RGB triads at the module frames (x red, y green, z blue)."""
-        self._frames_on = bool(visible)
+        self._frames_on = check_flag(visible, "visible")
         self._send([self._visibility_op("frames", self._frames_on)])
 
     def show_labels(self, visible: bool = True) -> None:
         """Show or hide the position labels."""
-        self._labels_on = bool(visible)
+        self._labels_on = check_flag(visible, "visible")
         ops = [self._visibility_op("labels", self._labels_on)]
-        if visible:
+        if self._labels_on:
             self._shown_labels = self.labels()
             drawing = self._require_drawing()
             ops.append(labels_op([self._path(p) for p in drawing.label_paths], self._shown_labels))
@@ -299,14 +303,8 @@ class Scene:
         self.channel.send(ops)
 
     def _values(self, robot: Robot, q: Any) -> np.ndarray:
-        values, batched = check_joint_values(
-            robot.q if q is None else q, robot.n, robot.coordinate_names
-        )
-        if batched:
-            raise InvalidInputError(
-                "q", q, f"one configuration of shape ({robot.n},); use animate() for a motion"
-            )
-        return values[0]
+        # A motion (T, n) is refused here: animate() plays it.
+        return check_configuration(robot.q if q is None else q, robot.n, robot.coordinate_names)
 
     def _require_drawing(self) -> RobotDrawing:
         assert self._drawing is not None, "the scene has no robot yet"

@@ -14,6 +14,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .._errors import InvalidInputError
+from .._validation import check_finite_number, check_integer
 from ._check_result import MatrixCheck
 from ._expected import ExpectedMatrix, as_expected, evaluate, sample_points
 from ._hints import NO_ANSWER, close, entries_text, entry_hints, explain, shape_hint
@@ -265,10 +266,10 @@ def check_matrix(
     >>> check_matrix(None, np.eye(2)).hints
     ['No answer yet: replace None with your matrix.']
     """
-    if isinstance(tol, bool) or not isinstance(tol, (int, float)) or not 0 <= tol < 1:
+    tol = check_finite_number(tol, "tol")
+    if not 0 <= tol < 1:
         raise InvalidInputError("tol", tol, "a number from 0 to 1 (relative tolerance)")
-    if isinstance(samples, bool) or not isinstance(samples, (int, np.integer)) or samples < 1:
-        raise InvalidInputError("samples", samples, "an integer ≥ 1")
+    samples = check_integer(samples, "samples", 1)
     limits = limits or ParserLimits()
     reference = as_expected(expected)
     if student is None:  # the exercise's placeholder: not answered yet

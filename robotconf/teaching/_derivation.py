@@ -14,23 +14,32 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .._errors import InvalidInputError
-from ..kinematics import DHLink, Module, transfer_matrix
+from .._validation import check_configuration, check_integer
+from ..kinematics import (
+    DH_FACTORS,
+    DH_JOINT_PARAMETER,
+    DH_SYMBOLS,
+    DHLink,
+    Module,
+    dh_formula,
+    transfer_matrix,
+)
+from ._expected import step_name
 from ._formatting import format_number, latex_text
 from ._step import DerivationStep
+from ._symbolic import (
+    SymbolicChain,
+    dh_values,
+    exact_number,
+    link_parameters,
+    parameter_value,
+    symbolic_chain,
+)
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..kinematics import Robot
-    from ._symbolic import SymbolicChain
 
 __all__ = ["Derivation", "derivation"]
-
-
-def _check_precision(precision: Any) -> int:
-    if isinstance(precision, bool) or not isinstance(precision, (int, np.integer)):
-        raise InvalidInputError("precision", precision, "an integer from 0 to 15")
-    if not 0 <= int(precision) <= 15:
-        raise InvalidInputError("precision", precision, "an integer from 0 to 15")
-    return int(precision)
 
 
 @dataclass(frozen=True, eq=False)
@@ -50,13 +59,8 @@ class Derivation:
     precision: int = 4
 
     def __getitem__(self, name: str) -> DerivationStep:
-        key = str(name).replace("_", "").replace(" ", "").upper()
-        key = "PEE" if key in ("EE", "PEE", "P") else key
-        for step in self.steps:
-            if step.name.replace("_", "").upper() == key:
-                return step
-        names = ", ".join(step.name for step in self.steps)
-        raise InvalidInputError("name", name, names, problem="no step named")
+        key = step_name(self.robot, name)
+        return next(step for step in self.steps if step.name == key)
 
     def __iter__(self) -> Iterator[DerivationStep]:
         return iter(self.steps)
@@ -115,43 +119,38 @@ class Derivation:
 def _describe_link(link: Any, i: int, shown: dict[str, str], active: bool) -> str:
     if not active:
         return f"identity (module {i} is inactive)"
+    # A module and a DH row are described in their own words (kind and offsets, or the row).
     if isinstance(link, Module):
-        a = "(" + ", ".join(shown[f] for f in ("ax", "ay", "az")) + ")"
+        a = "(" + ", ".join(shown[name] for name in link_parameters(link)) + ")"
         if link.kind == "none":
             return "none (null module): identity"
         if link.kind == "fixed":
             return f"fixed offset a = {a}"
         return f"{link.kind}(q{i}) with a = {a}"
-    assert isinstance(link, DHLink)
-    order = (
-        "Rz(θ)·Tz(d)·Tx(a)·Rx(α)" if link.convention == "standard" else "Rx(α)·Tx(a)·Rz(θ)·Tz(d)"
+    # θ0 and d0: the constant parts of the parameters a coordinate may add to.
+    constant = DH_JOINT_PARAMETER.values()
+    row = ", ".join(
+        f"{DH_SYMBOLS[name]}{'0' if name in constant else ''} = {shown[name]}"
+        for name in link_parameters(link)
     )
-    joint = "revolute: θ = θ0 + q" if link.joint == "R" else "prismatic: d = d0 + q"
+    joint = DH_SYMBOLS[DH_JOINT_PARAMETER[link.joint_type]]
     return (
-        f"{link.convention} DH {order}, θ0 = {shown['theta']}, d0 = {shown['d']}, "
-        f"a = {shown['a']}, α = {shown['alpha']} ({joint}{i})"
+        f"{link.convention} DH {dh_formula(link.convention)}, {row} "
+        f"({link.joint_type}: {joint} = {joint}0 + q{i})"
     )
 
 
 def _shown_values(link: Any, label: str, chain: SymbolicChain | None, precision: int) -> dict:
-    names = ("ax", "ay", "az") if isinstance(link, Module) else ("theta", "d", "a", "alpha")
+    names = link_parameters(link)
     if chain is None:
-        values = (
-            dict(zip(("ax", "ay", "az"), link.a, strict=True)) if isinstance(link, Module) else {}
-        )
-        if isinstance(link, DHLink):
-            values = {n: getattr(link, n) for n in names}
-        return {n: format_number(v, precision) for n, v in values.items()}
+        return {name: format_number(parameter_value(link, name), precision) for name in names}
     import sympy
 
-    from ._symbolic import exact_number, getattr_path
-
     placed = {(place, name): symbol for place, name, symbol in chain.length_places}
-    shown = {}
-    for n in names:
-        number = getattr_path(link, n) if n != "theta" and n != "alpha" else getattr(link, n)
-        shown[n] = sympy.sstr(placed.get((label, n), exact_number(number)))
-    return shown
+    return {
+        name: sympy.sstr(placed.get((label, name), exact_number(parameter_value(link, name))))
+        for name in names
+    }
 
 
 def derivation(
@@ -211,7 +210,7 @@ def derivation(
 
     if not isinstance(robot, Robot):
         raise InvalidInputError("robot", robot, "a robotconf Robot", problem="not a robot:")
-    precision = _check_precision(precision)
+    precision = check_integer(precision, "precision", 0, 15)
     if lengths and not symbolic:
         raise InvalidInputError(
             "lengths",
@@ -225,12 +224,7 @@ def derivation(
 
 
 def _numeric_derivation(robot: Robot, q: Any, precision: int) -> Derivation:
-    from .._validation import check_joint_values
-
-    values = robot.q if q is None else check_joint_values(q, robot.n, robot.coordinate_names)[0]
-    values = np.asarray(values, dtype=float).reshape(-1)
-    if values.shape != (robot.n,):
-        raise InvalidInputError("q", q, f"one configuration, shape ({robot.n},)")
+    values = robot.q if q is None else check_configuration(q, robot.n, robot.coordinate_names)
     transfer = robot.transfer_matrices(values)
     poses = robot.frame_poses(values)
     config = tuple(float(v) for v in values)
@@ -241,18 +235,16 @@ def _numeric_derivation(robot: Robot, q: Any, precision: int) -> Derivation:
         active = i < robot.active
         shown = _shown_values(link, label, None, precision)
         factors: tuple = ()
+        # Only a DH row is a product of elementary factors; a module is one table entry.
         if isinstance(link, DHLink) and active:
-            theta = link.theta + (values[i] if link.joint == "R" else 0.0)
-            d = link.d + (values[i] if link.joint == "P" else 0.0)
-            amount = {"Rz": theta, "Tz": d, "Tx": link.a, "Rx": link.alpha}
-            order = (
-                ("Rz", "Tz", "Tx", "Rx")
-                if link.convention == "standard"
-                else ("Rx", "Tx", "Rz", "Tz")
-            )
+            constants = {name: parameter_value(link, name) for name in link_parameters(link)}
+            amount = dh_values(link, constants, float(values[i]))
             factors = tuple(
-                (f"{k}({format_number(amount[k], precision)})", transfer_matrix(k, amount[k]))
-                for k in order
+                (
+                    f"{kind}({format_number(amount[name], precision)})",
+                    transfer_matrix(kind, amount[name]),
+                )
+                for kind, name in DH_FACTORS[link.convention]
             )
         description = _describe_link(link, i + 1, shown, active)
         steps.append(
@@ -279,8 +271,6 @@ def _symbolic_derivation(
     robot: Robot, q: Any, lengths: bool, precision: int, simplify: bool
 ) -> Derivation:
     import sympy
-
-    from ._symbolic import symbolic_chain
 
     chain = symbolic_chain(robot, q=q, lengths=lengths, simplify=simplify)
     config = None if q is None else tuple(float(v) for v in np.asarray(q, dtype=float))

@@ -24,7 +24,14 @@ if TYPE_CHECKING:  # pragma: no cover
 
     from ..kinematics import Robot
 
-__all__ = ["ExpectedMatrix", "expected_matrix", "as_expected", "evaluate", "sample_points"]
+__all__ = [
+    "ExpectedMatrix",
+    "expected_matrix",
+    "as_expected",
+    "evaluate",
+    "sample_points",
+    "step_name",
+]
 
 
 @dataclass(frozen=True, eq=False)
@@ -77,12 +84,27 @@ def _name_order(name: str) -> tuple[str, int, str]:
     return (stem, int(number) if number else 0, name)
 
 
-def _step_name(robot: Robot, name: Any) -> str:
+def step_name(robot: Robot, name: Any) -> str:
+    """The canonical name of a step of a robot's derivation: ``A<i>``, ``M<i>`` or ``p_EE``.
+
+    Case, spaces and underscores do not matter; ``EE`` and ``P`` also name ``p_EE``.
+
+    Examples
+    --------
+    >>> from robotconf.kinematics import Module, Robot
+    >>> robot = Robot([Module("Rz"), Module("Ry")])
+    >>> step_name(robot, "m2"), step_name(robot, "A_1"), step_name(robot, "EE")
+    ('M2', 'A1', 'p_EE')
+    >>> step_name(robot, "M3")
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: name: unknown matrix name 'M3'; allowed: A1 … A2, M1 … M2 or p_EE
+    """
     allowed = f"A1 … A{robot.n}, M1 … M{robot.n} or p_EE"
     if not isinstance(name, str):
         raise InvalidInputError("name", name, allowed, problem="not a matrix name:")
     key = name.replace("_", "").replace(" ", "").upper()
-    if key in ("PEE", "EE"):
+    if key in ("PEE", "EE", "P"):
         return "p_EE"
     if len(key) >= 2 and key[0] in "AM" and key[1:].isdigit() and 1 <= int(key[1:]) <= robot.n:
         return key[0] + str(int(key[1:]))
@@ -120,9 +142,9 @@ def expected_matrix(
     """
     from ._derivation import derivation
 
-    step_name = _step_name(robot, name)
+    key = step_name(robot, name)
     steps = derivation(robot, q=q, symbolic=True, lengths=lengths, simplify=False)
-    return as_expected(steps[step_name])
+    return as_expected(steps[key])
 
 
 def as_expected(reference: Any) -> ExpectedMatrix:

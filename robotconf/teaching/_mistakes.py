@@ -24,8 +24,17 @@ from typing import Any
 
 import numpy as np
 
-from ..kinematics import DHLink, Module
+from ..kinematics import (
+    AXIS_NAMES,
+    DH_CONVENTIONS,
+    DH_PARAMETERS,
+    DH_SYMBOLS,
+    DHLink,
+    Module,
+    dh_formula,
+)
 from ._expected import ExpectedMatrix
+from ._symbolic import sine_entries, with_parameter
 
 __all__ = [
     "Candidate",
@@ -35,14 +44,15 @@ __all__ = [
     "ROTATION_PATTERN",
 ]
 
+
+def _sine_pattern(axis: int) -> str:
+    minus, plus = sine_entries(axis)
+    entries = sorted([(minus, "−sin"), (plus, "+sin")])
+    return " and ".join(f"{sign} in entry ({r + 1},{c + 1})" for (r, c), sign in entries)
+
+
 #: Where the sines sit in an elementary rotation (1-based entries), for the hints.
-ROTATION_PATTERN = {
-    "x": "−sin in entry (2,3) and +sin in entry (3,2)",
-    "y": "+sin in entry (1,3) and −sin in entry (3,1)",
-    "z": "−sin in entry (1,2) and +sin in entry (2,1)",
-}
-_STANDARD = "Rz(θ)·Tz(d)·Tx(a)·Rx(α)"
-_MODIFIED = "Rx(α)·Tx(a)·Rz(θ)·Tz(d)"
+ROTATION_PATTERN = {axis: _sine_pattern(k) for k, axis in enumerate(AXIS_NAMES)}
 #: Link mistakes reported under a shared code.
 _MISTAKE_CODES = {
     "missing_d": "missing_offset",
@@ -87,23 +97,27 @@ def _translation(a: tuple[float, float, float]) -> np.ndarray:
 
 
 def _link_mistakes(link: Any) -> list[str]:
+    revolute = link.joint_type == "revolute"
+    # A module and a DH row invite different mistakes (an offset vs. the four parameters).
     if isinstance(link, Module):
         found = []
-        if link.joint_type == "revolute":
+        if revolute:
             found.append("rotation_direction")
             if any(link.a):
                 found.append("offset_after_rotation")
         if link.kind != "none" and any(link.a):
             found.append("missing_offset")
         return found
-    if isinstance(link, DHLink):
-        found = ["rotation_direction"] if link.joint == "R" else []
-        found += ["missing_d"] if link.d != 0 else []
-        found += ["missing_a"] if link.a != 0 else []
-        found += ["alpha_sign"] if link.alpha != 0 else []
-        found += ["swapped_d_a"] if link.joint == "R" and link.d != link.a else []
-        return found
-    return []
+    found = ["rotation_direction"] if revolute else []
+    found += ["missing_d"] if link.d != 0 else []
+    found += ["missing_a"] if link.a != 0 else []
+    found += ["alpha_sign"] if link.alpha != 0 else []
+    found += ["swapped_d_a"] if revolute and link.d != link.a else []
+    return found
+
+
+def _other_convention(convention: str) -> str:
+    return next(other for other in DH_CONVENTIONS if other != convention)
 
 
 def _link_matrix(
@@ -115,9 +129,10 @@ def _link_matrix(
     ``convert_q`` (a numeric configuration), the joint angle.
     """
     to_units = {"degrees": math.degrees, "radians": math.radians}.get(units or "")
+    revolute = link.joint_type == "revolute"
+    if to_units is not None and convert_q and revolute:
+        q = to_units(q)
     if isinstance(link, Module):
-        if to_units is not None and convert_q and link.joint_type == "revolute":
-            q = to_units(q)
         if mistake == "rotation_direction":
             return link.matrix(-q)
         if mistake == "missing_offset":
@@ -128,8 +143,6 @@ def _link_matrix(
     changes: dict[str, Any] = {}
     if to_units is not None:
         changes["theta"], changes["alpha"] = to_units(link.theta), to_units(link.alpha)
-        if link.joint == "R" and convert_q:
-            q = to_units(q)
     if mistake == "rotation_direction":
         changes["theta"] = -changes.get("theta", link.theta)
         q = -q
@@ -142,7 +155,7 @@ def _link_matrix(
     if mistake == "swapped_d_a":
         changes["d"], changes["a"] = link.a, link.d
     if mistake == "convention":
-        changes["convention"] = "modified" if link.convention == "standard" else "standard"
+        changes["convention"] = _other_convention(link.convention)
     return dataclasses.replace(link, **changes).matrix(q) if changes else link.matrix(q)
 
 
@@ -151,10 +164,10 @@ def _mistake_message(code: str, j: int, link: Any) -> str:
     if isinstance(link, Module):
         label += f", {link.kind} with a = {_vector(link.a)})"
     else:
-        label += f", DH row θ={_fmt(link.theta)}, d={_fmt(link.d)}, a={_fmt(link.a)}, "
-        label += f"α={_fmt(link.alpha)})"
+        row = ", ".join(f"{DH_SYMBOLS[name]}={_fmt(getattr(link, name))}" for name in DH_PARAMETERS)
+        label += f", DH row {row})"
     if code == "rotation_direction":
-        axis = "z" if isinstance(link, DHLink) else link.axis
+        axis = link.axis
         return (
             f"The sine terms of {label} have the wrong sign, so the joint turns the wrong way: "
             f"a positive rotation about {axis} has {ROTATION_PATTERN[axis]}."
@@ -215,17 +228,11 @@ class _Context:
             if symbol.name not in env:  # a length this matrix does not depend on
                 continue
             value = float(env[symbol.name][i])
-            if label == "EE":
-                point["xyz".index(name[1])] = value
+            if label == "EE":  # the point's coordinates are named Px, Py, Pz
+                point[AXIS_NAMES.index(name[1])] = value
                 continue
             j = labels.index(label)
-            link = links[j]
-            if isinstance(link, Module):
-                a = list(link.a)
-                a["xyz".index(name[1])] = value
-                links[j] = link.with_a(a)
-            else:
-                links[j] = dataclasses.replace(link, **{name: value})  # type: ignore[type-var]
+            links[j] = with_parameter(links[j], name, value)
         return type(robot)(links, end_effector=point, active=robot.active, name=robot.name)
 
     def chain(self, i: int, mistakes: dict[int, str], units: str | None) -> list[np.ndarray]:
@@ -305,11 +312,11 @@ def context_candidates(
     dh_links = [j for j in range(first - 1, last) if isinstance(robot.modules[j], DHLink)]
     if dh_links:
         convention = robot.modules[dh_links[0]].convention  # type: ignore[attr-defined]
-        other = "modified" if convention == "standard" else "standard"
-        orders = {"standard": _STANDARD, "modified": _MODIFIED}
+        other = _other_convention(convention)
         message = (
-            f"You used the {other} DH convention ({orders[other]}) but this table is "
-            f"{convention} DH ({orders[convention]}); multiply the four factors in that order."
+            f"You used the {other} DH convention ({dh_formula(other)}) but this table is "
+            f"{convention} DH ({dh_formula(convention)}); multiply the four factors in that "
+            "order."
         )
         mistakes = {j: "convention" for j in dh_links}
         candidates.append(Candidate("dh_convention", message, context.value(mistakes)))

@@ -22,11 +22,12 @@ from __future__ import annotations
 
 import ast
 from collections.abc import Iterable
-from dataclasses import dataclass
+from dataclasses import dataclass, fields
 from fractions import Fraction
 from typing import TYPE_CHECKING, Any
 
 from .._errors import InvalidInputError
+from .._validation import check_integer
 
 if TYPE_CHECKING:  # pragma: no cover
     import sympy
@@ -85,6 +86,20 @@ class ParserLimits:
         Digits in one number literal.
     max_entries : int
         Entries in a matrix.
+
+    Raises
+    ------
+    InvalidInputError
+        For a cap that is not an integer ≥ 1.
+
+    Examples
+    --------
+    >>> ParserLimits(max_depth=10).max_depth
+    10
+    >>> ParserLimits(max_length=0)
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: max_length: out of range: 0; allowed: an integer ≥ 1
     """
 
     max_length: int = 20_000
@@ -92,6 +107,10 @@ class ParserLimits:
     max_exponent: int = 64
     max_digits: int = 40
     max_entries: int = 400
+
+    def __post_init__(self) -> None:
+        for cap in fields(self):
+            object.__setattr__(self, cap.name, check_integer(getattr(self, cap.name), cap.name, 1))
 
 
 def _quote(text: str, node: ast.AST | None = None, limit: int = 60) -> str:

@@ -1,8 +1,10 @@
 """Symbolic transfer matrices with sympy: modules, DH links and whole robots.
 
 This is a second, independent implementation of the kinematics: every matrix is written
-from the table in DESIGN.md §1 (modules) or from the DH factor products (paper eq. 9–10),
-not from the numpy kernel, so the two can check each other. Symbols are real:
+from the module table (docs/conventions.md, Modules) or from the DH factor products (paper
+eq. 9–10), not from the numpy kernel, so the two can check each other. Only the naming
+comes from :mod:`robotconf.kinematics` (movement types, axes, the order of the DH factors).
+Symbols are real:
 ``q1 … qn`` for the generalized coordinates and, on request, ``l1, l2, …`` for the
 non-zero lengths in the order they appear along the chain (for the paper's R_zR_yR_y
 robot this gives its ``l1 = 20``, ``l2 = 30``, ``l3 = 40``).
@@ -12,13 +14,29 @@ sympy is imported inside the functions, so ``import robotconf`` stays numpy-only
 
 from __future__ import annotations
 
+import dataclasses
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, cast
 
 from .._errors import InvalidInputError
-from ..kinematics import DHLink, Link, Module
+from .._validation import check_configuration
+from ..kinematics import (
+    AXIS_NAMES,
+    DH_FACTORS,
+    DH_JOINT_PARAMETER,
+    DH_LENGTHS,
+    DH_PARAMETERS,
+    MODULE_OFFSETS,
+    ROTATION_KINDS,
+    TRANSLATION_KINDS,
+    DHLink,
+    Link,
+    Module,
+    check_convention,
+    kind_axis,
+)
 
 if TYPE_CHECKING:  # pragma: no cover
     import sympy
@@ -34,6 +52,12 @@ __all__ = [
     "simplify_matrix",
     "SymbolicChain",
     "symbolic_chain",
+    "sine_entries",
+    "link_parameters",
+    "length_parameters",
+    "parameter_value",
+    "with_parameter",
+    "dh_values",
 ]
 
 
@@ -82,8 +106,35 @@ def exact_number(value: Any, max_denominator: int = 1000) -> sympy.Expr:
     return sympy.Float(x)
 
 
+def sine_entries(axis: int) -> tuple[tuple[int, int], tuple[int, int]]:
+    """Where the sines sit in the elementary rotation about an axis (0-based entries).
+
+    Rotating about axis ``k`` turns axis ``i = k+1`` towards ``j = k+2`` (mod 3), so
+    ``−sin`` is entry ``(i, j)`` and ``+sin`` entry ``(j, i)``.
+
+    Parameters
+    ----------
+    axis : int
+        0 (x), 1 (y) or 2 (z).
+
+    Returns
+    -------
+    (minus, plus) : two (row, column) pairs
+
+    Examples
+    --------
+    >>> sine_entries(1)  # Ry: −sin in row 3, column 1; +sin in row 1, column 3
+    ((2, 0), (0, 2))
+    """
+    i, j = (axis + 1) % 3, (axis + 2) % 3
+    return (i, j), (j, i)
+
+
 def elementary_matrix(kind: str, value: Any) -> sympy.Matrix:
     """Elementary 4×4 rotation or translation about/along a principal axis.
+
+    Part of the independent second implementation, in sympy, of the module table; tests
+    compare the two.
 
     Parameters
     ----------
@@ -108,15 +159,17 @@ def elementary_matrix(kind: str, value: Any) -> sympy.Matrix:
     """
     import sympy
 
-    if kind not in ("Rx", "Ry", "Rz", "Tx", "Ty", "Tz"):
-        raise InvalidInputError("kind", kind, "Rx, Ry, Rz, Tx, Ty or Tz")
+    kinds = (*ROTATION_KINDS, *TRANSLATION_KINDS)
+    if kind not in kinds:
+        raise InvalidInputError("kind", kind, ", ".join(kinds[:-1]) + f" or {kinds[-1]}")
     matrix = sympy.eye(4)
-    k = "xyz".index(kind[1])
-    if kind[0] == "T":
+    k = kind_axis(kind)
+    assert k is not None  # every rotation and translation has an axis
+    if kind in TRANSLATION_KINDS:
         matrix[k, 3] = value
         return matrix
     c, s = sympy.cos(value), sympy.sin(value)
-    i, j = (k + 1) % 3, (k + 2) % 3
+    (i, j), _ = sine_entries(k)
     matrix[i, i] = c
     matrix[j, j] = c
     matrix[j, i] = s
@@ -125,7 +178,10 @@ def elementary_matrix(kind: str, value: Any) -> sympy.Matrix:
 
 
 def module_matrix(kind: str, q: Any, a: Any) -> sympy.Matrix:
-    """A module's transfer matrix ``A(q, a)`` exactly as in the DESIGN.md §1 table.
+    """A module's transfer matrix ``A(q, a)``, written out from the module table.
+
+    An independent second implementation, in sympy, of the module table
+    (docs/conventions.md, Modules); tests compare the two.
 
     Parameters
     ----------
@@ -175,6 +231,9 @@ def dh_factors(
 ) -> list[tuple[str, sympy.Matrix]]:
     """The four elementary factors of a DH transfer matrix, in multiplication order.
 
+    The order is the convention's (:data:`~robotconf.kinematics.DH_FACTORS`); each factor
+    is an :func:`elementary_matrix`.
+
     Parameters
     ----------
     theta, d, a, alpha : sympy expressions or numbers
@@ -194,16 +253,85 @@ def dh_factors(
     >>> [name for name, _ in dh_factors(0, 1, 2, 0, "modified")]
     ['Rx', 'Tx', 'Rz', 'Tz']
     """
-    values = {"Rz": theta, "Tz": d, "Tx": a, "Rx": alpha}
-    if convention == "standard":
-        order = ("Rz", "Tz", "Tx", "Rx")
-    elif convention == "modified":
-        order = ("Rx", "Tx", "Rz", "Tz")
-    else:
-        raise InvalidInputError(
-            "convention", convention, "'standard' or 'modified'", problem="unknown DH convention"
-        )
-    return [(name, elementary_matrix(name, values[name])) for name in order]
+    values = {"theta": theta, "d": d, "a": a, "alpha": alpha}
+    order = DH_FACTORS[check_convention(convention)]
+    return [(kind, elementary_matrix(kind, values[name])) for kind, name in order]
+
+
+def link_parameters(link: Link) -> tuple[str, ...]:
+    """The names of a link's constant parameters, in table order.
+
+    ``ax, ay, az`` for a module, ``theta, d, a, alpha`` for a DH row.
+
+    >>> link_parameters(Module("Rz")), link_parameters(DHLink())
+    (('ax', 'ay', 'az'), ('theta', 'd', 'a', 'alpha'))
+    """
+    return MODULE_OFFSETS if isinstance(link, Module) else DH_PARAMETERS
+
+
+def length_parameters(link: Link) -> tuple[str, ...]:
+    """The lengths among a link's parameters; none for a ``none`` module (it ignores ``a``).
+
+    >>> length_parameters(Module("Ry")), length_parameters(DHLink()), length_parameters(Module(0))
+    (('ax', 'ay', 'az'), ('d', 'a'), ())
+    """
+    if link.joint_type == "none":
+        return ()
+    return tuple(name for name in link_parameters(link) if name in MODULE_OFFSETS + DH_LENGTHS)
+
+
+def parameter_value(link: Link, name: str) -> float:
+    """A link's parameter by name (:func:`link_parameters`): radians or length units.
+
+    >>> parameter_value(Module("Ry", a=(0, 0, 20)), "az"), parameter_value(DHLink(d=0.5), "d")
+    (20.0, 0.5)
+    """
+    if name in MODULE_OFFSETS:  # only a module has offsets
+        return float(cast(Module, link).a[MODULE_OFFSETS.index(name)])
+    return float(getattr(link, name))
+
+
+def with_parameter(link: Link, name: str, value: float) -> Link:
+    """A copy of a link with one parameter (:func:`link_parameters`) changed.
+
+    >>> with_parameter(Module("Ry", a=(0, 0, 20)), "ax", 5.0)
+    Module('Ry', a=(5.0, 0.0, 20.0))
+    """
+    changes: dict[str, Any] = {name: value}
+    if name in MODULE_OFFSETS:  # only a module has offsets
+        offsets = list(cast(Module, link).a)
+        offsets[MODULE_OFFSETS.index(name)] = value
+        changes = {"a": tuple(offsets)}
+    return dataclasses.replace(link, **changes)  # type: ignore[type-var]
+
+
+def dh_values(link: DHLink, parameters: dict[str, Any], q: Any) -> dict[str, Any]:
+    """A DH row's four parameters with its coordinate added (θ0 + q or d0 + q).
+
+    Works on numbers and on sympy expressions alike.
+
+    Parameters
+    ----------
+    link : DHLink
+        Gives the joint type.
+    parameters : dict
+        ``theta``, ``d``, ``a``, ``alpha`` (radians, length units).
+    q : number or sympy expression
+        The joint coordinate.
+
+    Returns
+    -------
+    dict
+
+    Examples
+    --------
+    >>> dh_values(DHLink(joint="P"), {"theta": 0.0, "d": 1.0, "a": 2.0, "alpha": 0.0}, 0.5)
+    {'theta': 0.0, 'd': 1.5, 'a': 2.0, 'alpha': 0.0}
+    """
+    values = dict(parameters)
+    key = DH_JOINT_PARAMETER[link.joint_type]
+    values[key] = values[key] + q
+    return values
 
 
 def link_factors(
@@ -217,8 +345,8 @@ def link_factors(
     q : sympy expression or number
         Generalized coordinate.
     lengths : dict, optional
-        Replacements for lengths by field name (``"ax"``, ``"ay"``, ``"az"`` of a module,
-        ``"d"``, ``"a"`` of a DH row); missing ones use the link's exact numbers.
+        Replacements for lengths by parameter name (``"ax"``, ``"ay"``, ``"az"`` of a
+        module, ``"d"``, ``"a"`` of a DH row); missing ones use the link's exact numbers.
 
     Returns
     -------
@@ -227,35 +355,37 @@ def link_factors(
         matrix comes straight from the table.
     matrix : sympy.Matrix, shape (4, 4)
         The link's transfer matrix (product of the factors, unsimplified).
+
+    Examples
+    --------
+    >>> import sympy
+    >>> factors, matrix = link_factors(DHLink(a=1.0), sympy.Symbol("q1", real=True))
+    >>> [label for label, _ in factors], matrix[0, 3]
+    (['Rz(q1)', 'Tz(0)', 'Tx(1)', 'Rx(0)'], cos(q1))
     """
     import sympy
 
     lengths = lengths or {}
-
-    def value(name: str) -> Any:
-        return lengths.get(name, exact_number(getattr_path(link, name)))
-
+    values = {
+        name: lengths.get(name, exact_number(parameter_value(link, name)))
+        for name in link_parameters(link)
+    }
+    # The module table and the DH factor product are two different constructions.
     if isinstance(link, Module):
-        a = [value(name) for name in ("ax", "ay", "az")]
-        return [], module_matrix(link.kind, q, a)
+        return [], module_matrix(link.kind, q, [values[name] for name in MODULE_OFFSETS])
     if isinstance(link, DHLink):
-        theta = exact_number(link.theta) + (q if link.joint == "R" else 0)
-        d = value("d") + (q if link.joint == "P" else 0)
-        factors = dh_factors(theta, d, value("a"), exact_number(link.alpha), link.convention)
-        shown = {"Rz": theta, "Tz": d, "Tx": value("a"), "Rx": exact_number(link.alpha)}
-        labelled = [(f"{name}({sympy.sstr(shown[name])})", m) for name, m in factors]
+        values = dh_values(link, values, q)
+        factors = dh_factors(**values, convention=link.convention)
+        order = DH_FACTORS[link.convention]
+        labelled = [
+            (f"{kind}({sympy.sstr(values[name])})", matrix)
+            for (kind, name), (_, matrix) in zip(order, factors, strict=True)
+        ]
         product = sympy.eye(4)
-        for _, m in factors:
-            product = product * m
+        for _, matrix in factors:
+            product = product * matrix
         return labelled, product
     raise InvalidInputError("link", link, "a Module or DHLink", problem="unknown link type")
-
-
-def getattr_path(link: Link, name: str) -> float:
-    """A length of a link by name: ``ax``/``ay``/``az`` of a module, ``d``/``a`` of a DH row."""
-    if isinstance(link, Module) and name in ("ax", "ay", "az"):
-        return link.a["xyz".index(name[1])]
-    return float(getattr(link, name))
 
 
 def _simplify_entry(expr: sympy.Expr) -> sympy.Expr:
@@ -295,9 +425,6 @@ def simplify_matrix(matrix: sympy.Matrix) -> sympy.Matrix:
     Matrix([[cos(a + b)]])
     """
     return matrix.applyfunc(_simplify_entry)
-
-
-_LENGTH_FIELDS = {"module": ("ax", "ay", "az"), "dh": ("d", "a")}
 
 
 @dataclass
@@ -397,19 +524,12 @@ def symbolic_chain(
     """
     import sympy
 
-    from .._validation import check_joint_values
-
-    n = robot.n
     q_symbols = [sympy.Symbol(name, real=True) for name in robot.coordinate_names]
     if q is None:
         q_values: list[Any] = list(q_symbols)
     else:
-        values, batched = check_joint_values(q, n, robot.coordinate_names)
-        if batched:
-            raise InvalidInputError(
-                "q", q, f"one configuration, shape ({n},)", problem="a trajectory is not allowed:"
-            )
-        q_values = [exact_number(v) for v in values[0]]
+        values = check_configuration(q, robot.n, robot.coordinate_names)
+        q_values = [exact_number(v) for v in values]
     length_values: dict[Any, Any] = {}
     places: list[tuple[str, str, Any]] = []
 
@@ -428,17 +548,17 @@ def symbolic_chain(
             factors.append([])
             transfer.append(sympy.eye(4))
             continue
-        kind = "module" if isinstance(link, Module) else "dh"
-        relevant = _LENGTH_FIELDS[kind]
-        if isinstance(link, Module) and link.kind == "none":
-            relevant = ()
-        chosen = {name: symbol_for(label, name, getattr_path(link, name)) for name in relevant}
+        chosen = {
+            name: symbol_for(label, name, parameter_value(link, name))
+            for name in length_parameters(link)
+        }
         link_f, matrix = link_factors(link, q_values[i], chosen)
         factors.append(link_f)
-        transfer.append(matrix if kind == "module" else simplify_matrix(matrix))
+        # A product of factors needs simplifying; a module's table entry is already simple.
+        transfer.append(simplify_matrix(matrix) if link_f else matrix)
     point = [
         symbol_for("EE", f"P{axis}", v)
-        for axis, v in zip("xyz", robot.end_effector_point, strict=True)
+        for axis, v in zip(AXIS_NAMES, robot.end_effector_point, strict=True)
     ]
     return SymbolicChain(
         robot=robot,
