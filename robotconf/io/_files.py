@@ -18,14 +18,13 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .._errors import InvalidInputError
-from .._validation import Rejected
+from .._validation import Rejected, check_json_object
 from ..motion import SimulationSettings
 from ..signals import Constant, Signal, signal_from_dict
 from ._schema import (
     FORMAT,
     VERSION,
     JSONObject,
-    check_object,
     check_simulation,
     robot_from_dict,
     robot_to_dict,
@@ -234,7 +233,7 @@ class Setup:
                 f"versions up to {VERSION}: update robotconf to read it",
                 problem="written by a newer robotconf: file format version",
             )
-        check_object(data, "file", _TOP_KEYS)
+        check_json_object(data, "file", _TOP_KEYS)
         robot = robot_from_dict(data["robot"])
         signals = _check_signals(data.get("signals", {}), robot)
         simulation = data.get("simulation")

@@ -7,12 +7,11 @@ allowed. Nothing is ever evaluated. docs/file-format.md describes the schema.
 
 from __future__ import annotations
 
-import math
 from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
 from .._errors import InvalidInputError
-from .._validation import Rejected
+from .._validation import check_json_number, check_json_object
 from ..kinematics import MODULE_KINDS, DHLink, Module
 from ..motion import SimulationSettings
 
@@ -60,66 +59,13 @@ class JSONObject(dict):  # type: ignore[type-arg]
     duplicates: tuple[str, ...] = ()
 
 
-def check_object(value: Any, path: str, keys: Mapping[str, bool]) -> Mapping[str, Any]:
-    """``value`` as a dict with only the known ``keys`` (True: required) and no duplicates.
-
-    >>> check_object({"t_end": 1.0}, "simulation", {"t_end": True, "dt": False})
-    {'t_end': 1.0}
-    """
-    allowed = ", ".join(f"{k}" if required else f"{k} (optional)" for k, required in keys.items())
-    if not isinstance(value, Mapping):
-        raise InvalidInputError(
-            path, value, f"an object with keys {allowed}", problem="expected an object, got"
-        )
-    duplicates = getattr(value, "duplicates", ())
-    if duplicates:
-        raise InvalidInputError(
-            f"{path}.{duplicates[0]}", duplicates[0], "each key once", problem="duplicate key"
-        )
-    for key in value:
-        if key not in keys:
-            raise InvalidInputError(
-                f"{path}.{key}", value[key], f"the keys {allowed}", problem="unknown key, value"
-            )
-    for key, required in keys.items():
-        if required and key not in value:
-            raise InvalidInputError(f"{path}.{key}", None, f"the keys {allowed}", problem="missing")
-    return value
-
-
-def number(value: Any, path: str) -> float:
-    """A finite JSON number as float; ``true``/``false``, text, NaN and infinities refused.
-
-    >>> number(20, "robot.links[1].a[2]")
-    20.0
-    >>> number(True, "robot.links[0].q")
-    Traceback (most recent call last):
-    ...
-    robotconf.InvalidInputError: robot.links[0].q: expected a number, got a boolean: True; ...
-    """
-    allowed = "a finite number"
-    if isinstance(value, Rejected):
-        raise InvalidInputError(path, value, allowed, problem=f"{value.reason}:")
-    if isinstance(value, bool):
-        raise InvalidInputError(path, value, allowed, problem="expected a number, got a boolean:")
-    if not isinstance(value, (int, float)):
-        raise InvalidInputError(path, value, allowed, problem="expected a number, got")
-    try:
-        result = float(value)
-    except OverflowError:
-        raise InvalidInputError(path, value, allowed, problem="too large:") from None
-    if not math.isfinite(result):
-        raise InvalidInputError(path, result, allowed, problem="must be finite, got")
-    return result
-
-
 def numbers(value: Any, path: str, count: int) -> list[float]:
     """A JSON list of exactly ``count`` finite numbers."""
     if not isinstance(value, list) or len(value) != count:
         raise InvalidInputError(
             path, value, f"a list of {count} finite numbers", problem=f"expected {count} numbers:"
         )
-    return [number(v, f"{path}[{i}]") for i, v in enumerate(value)]
+    return [check_json_number(v, f"{path}[{i}]") for i, v in enumerate(value)]
 
 
 def text(value: Any, path: str, choices: tuple[str, ...] | None = None) -> str:
@@ -163,26 +109,28 @@ def link_from_dict(value: Any, path: str) -> Module | DHLink:
             problem="unknown link type",
         )
     if value["type"] == "module":
-        check_object(value, path, _MODULE_KEYS)
+        check_json_object(value, path, _MODULE_KEYS)
         kinds = (*MODULE_KINDS, "null")
         return _build(
             Module,
             path,
             kind=text(value["kind"], f"{path}.kind", kinds),
             a=numbers(value.get("a", [0.0, 0.0, 0.0]), f"{path}.a", 3),
-            q=number(value.get("q", 0.0), f"{path}.q"),
+            q=check_json_number(value.get("q", 0.0), f"{path}.q"),
             name=_optional_name(value.get("name"), f"{path}.name"),
             limits=_limits(value.get("limits"), f"{path}.limits"),
         )
-    check_object(value, path, _DH_KEYS)
-    fields = {key: number(value[key], f"{path}.{key}") for key in ("theta", "d", "a", "alpha")}
+    check_json_object(value, path, _DH_KEYS)
+    fields = {
+        key: check_json_number(value[key], f"{path}.{key}") for key in ("theta", "d", "a", "alpha")
+    }
     return _build(
         DHLink,
         path,
         **fields,
         joint=text(value["joint"], f"{path}.joint", ("R", "P")),
         convention=text(value["convention"], f"{path}.convention", ("standard", "modified")),
-        q=number(value.get("q", 0.0), f"{path}.q"),
+        q=check_json_number(value.get("q", 0.0), f"{path}.q"),
         name=_optional_name(value.get("name"), f"{path}.name"),
         limits=_limits(value.get("limits"), f"{path}.limits"),
     )
@@ -198,7 +146,7 @@ def robot_from_dict(value: Any, path: str = "robot") -> Robot:
     """
     from ..kinematics import Robot  # local: _robot imports the file methods
 
-    check_object(value, path, _ROBOT_KEYS)
+    check_json_object(value, path, _ROBOT_KEYS)
     links = value["links"]
     allowed = f"a list of 1 to {MAX_LINKS} links"
     if not isinstance(links, list) or not links:

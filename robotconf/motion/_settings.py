@@ -8,14 +8,13 @@ apply wherever a run is described.
 from __future__ import annotations
 
 import dataclasses
-from collections.abc import Mapping
 from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import Rejected, check_finite_number, check_integer
+from .._validation import check_finite_number, check_integer, check_json_number, check_json_object
 
 __all__ = ["SimulationSettings", "METHODS", "MAX_TIME_SAMPLES", "MAX_SAMPLE_POINTS"]
 
@@ -57,21 +56,6 @@ def _sample_count(t0: float, t_end: float, dt: float) -> int:
         )
     # Round-off in (t_end − t0)/dt must not drop the last sample (0.3/0.1 = 2.9999…).
     return int(np.floor(steps + max(1e-9, 8.0 * np.finfo(float).eps * steps))) + 1
-
-
-def _json_number(value: Any, path: str) -> float:
-    """A JSON number as float: JSON has no NaN/Infinity, and true/false are not numbers."""
-    allowed = "a finite number"
-    if isinstance(value, Rejected):
-        raise InvalidInputError(path, value, allowed, problem=f"{value.reason}:")
-    if isinstance(value, bool):
-        raise InvalidInputError(path, value, allowed, problem="expected a number, got a boolean:")
-    if not isinstance(value, (int, float)):
-        raise InvalidInputError(path, value, allowed, problem="expected a number, got")
-    try:
-        return float(value)
-    except OverflowError:
-        raise InvalidInputError(path, value, allowed, problem="too large:") from None
 
 
 @dataclass(frozen=True)
@@ -238,27 +222,11 @@ class SimulationSettings:
         ...
         robotconf.InvalidInputError: simulation.dt: expected a number, got a boolean: True; ...
         """
-        keys = ", ".join(k if required else f"{k} (optional)" for k, required in _REQUIRED.items())
-        if not isinstance(data, Mapping):
-            raise InvalidInputError(
-                path, data, f"an object with keys {keys}", problem="expected an object, got"
-            )
-        duplicates = getattr(data, "duplicates", ())  # set by the file reader's JSON parser
-        if duplicates:
-            raise InvalidInputError(
-                f"{path}.{duplicates[0]}", duplicates[0], "each key once", problem="duplicate key"
-            )
-        for key in data:
-            if key not in _REQUIRED:
-                raise InvalidInputError(
-                    f"{path}.{key}", data[key], f"the keys {keys}", problem="unknown key, value"
-                )
-        if "t_end" not in data:
-            raise InvalidInputError(f"{path}.t_end", None, f"the keys {keys}", problem="missing")
+        check_json_object(data, path, _REQUIRED)
         values: dict[str, Any] = {}
         for key in ("t_end", "dt", "t0"):
             if key in data:
-                values[key] = _json_number(data[key], f"{path}.{key}")
+                values[key] = check_json_number(data[key], f"{path}.{key}")
         if "method" in data:
             if not isinstance(data["method"], str):
                 raise InvalidInputError(
