@@ -255,17 +255,16 @@ def test_sine_entries_match_the_numpy_kernel(kind):
 
 
 def test_link_parameters_read_and_replace_by_name():
-    from robotconf.teaching._symbolic import (
-        length_parameters,
-        parameter_value,
-        with_parameter,
-    )
 
     module = Module("Ry", a=(1, 2, 3))
     row = DHLink(0.1, 0.2, 0.3, 0.4, "P", "modified", name="j")
-    assert [parameter_value(module, n) for n in ("ax", "ay", "az")] == [1.0, 2.0, 3.0]
-    assert [parameter_value(row, n) for n in ("theta", "d", "a", "alpha")] == [0.1, 0.2, 0.3, 0.4]
-    assert length_parameters(Module("none", a=(1, 0, 0))) == ()
-    assert length_parameters(row) == ("d", "a")
-    assert with_parameter(module, "ay", 5.0) == Module("Ry", a=(1, 5, 3))
-    assert with_parameter(row, "d", 0.7) == DHLink(0.1, 0.7, 0.3, 0.4, "P", "modified", name="j")
+    assert module.parameters() == {"ax": 1.0, "ay": 2.0, "az": 3.0}
+    assert row.parameters() == {"theta": 0.1, "d": 0.2, "a": 0.3, "alpha": 0.4}
+    assert Module("none", a=(1, 0, 0)).length_parameters() == ()
+    assert row.length_parameters() == ("d", "a")
+    assert module.with_parameters(ay=5.0) == Module("Ry", a=(1, 5, 3))
+    assert row.with_parameters(d=0.7) == DHLink(0.1, 0.7, 0.3, 0.4, "P", "modified", name="j")
+    with pytest.raises(ValueError, match="d: not a module offset"):
+        module.with_parameters(d=1.0)
+    with pytest.raises(ValueError, match="ax: not a DH parameter"):
+        row.with_parameters(ax=1.0)

@@ -10,7 +10,7 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number
-from ._conventions import DH_CONVENTIONS, JOINT_LETTERS, JOINT_OF_LETTER, dh_formula
+from ._conventions import DH_CONVENTIONS, DH_PARAMETERS, JOINT_LETTERS, JOINT_OF_LETTER, dh_formula
 from ._geometry import LinkGeometry
 from ._limits import check_limits
 from ._link import Link
@@ -134,6 +134,30 @@ class DHLink(Link):
     def row(self) -> tuple[float, float, float, float, str]:
         """The DH row ``(theta, d, a, alpha, joint)``."""
         return (self.theta, self.d, self.a, self.alpha, self.joint)
+
+    def parameters(self) -> dict[str, float]:
+        """The row by name: ``{"theta": …, "d": …, "a": …, "alpha": …}`` (radians, length).
+
+        >>> DHLink(d=0.5, a=2.0).parameters()
+        {'theta': 0.0, 'd': 0.5, 'a': 2.0, 'alpha': 0.0}
+        """
+        return {name: getattr(self, name) for name in DH_PARAMETERS}
+
+    def with_parameters(self, **changes: float) -> DHLink:
+        """A copy with some of ``theta``, ``d``, ``a``, ``alpha`` changed.
+
+        >>> DHLink(a=2.0).with_parameters(d=0.7).row()
+        (0.0, 0.7, 2.0, 0.0, 'R')
+        """
+        unknown = sorted(set(changes) - set(DH_PARAMETERS))
+        if unknown:
+            raise InvalidInputError(
+                unknown[0],
+                changes[unknown[0]],
+                "theta, d, a or alpha",
+                problem="not a DH parameter:",
+            )
+        return self._copy(**changes)
 
     def constant_length(self) -> float:
         """``√(a² + d²)``; only ``a`` for a prismatic row, whose ``d`` is where ``q`` starts.

@@ -8,7 +8,7 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number, check_joint_values
-from ._conventions import JOINT_LETTERS, JOINT_UNITS
+from ._conventions import DH_LENGTHS, JOINT_LETTERS, JOINT_UNITS, MODULE_OFFSETS
 from ._geometry import LinkGeometry
 from ._kernel import link_matrices
 
@@ -36,6 +36,28 @@ class Link:
     def constant_length(self) -> float:  # pragma: no cover - abstract
         """The length the link adds to the robot's size whatever ``q`` is (length units)."""
         raise NotImplementedError
+
+    def parameters(self) -> dict[str, float]:  # pragma: no cover - abstract
+        """The link's constant parameters by name, in table order (radians, length units)."""
+        raise NotImplementedError
+
+    def with_parameters(self, **changes: float) -> Link:  # pragma: no cover - abstract
+        """A copy with some constant parameters (:meth:`parameters`) changed."""
+        raise NotImplementedError
+
+    def length_parameters(self) -> tuple[str, ...]:
+        """The names of the parameters that are lengths; none for a ``none`` module.
+
+        >>> from robotconf.kinematics import DHLink, Module
+        >>> Module("Ry").length_parameters(), DHLink().length_parameters()
+        (('ax', 'ay', 'az'), ('d', 'a'))
+        >>> Module("none", a=(1, 0, 0)).length_parameters()
+        ()
+        """
+        if self.joint_type == "none":  # the null module ignores its offsets
+            return ()
+        lengths = MODULE_OFFSETS + DH_LENGTHS
+        return tuple(name for name in self.parameters() if name in lengths)
 
     def with_q(self, q: float) -> Link:  # pragma: no cover - abstract
         """A copy with another coordinate value."""

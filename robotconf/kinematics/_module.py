@@ -15,6 +15,7 @@ from ._conventions import (
     KIND_ALIASES,
     MODULE_CODES,
     MODULE_KINDS,
+    MODULE_OFFSETS,
     kind_axis,
     kind_joint_type,
 )
@@ -161,6 +162,28 @@ class Module(Link):
         """``"x"``, ``"y"`` or ``"z"`` for a joint; ``None`` for ``none`` and ``fixed``."""
         axis = kind_axis(self.kind)
         return None if axis is None else AXIS_NAMES[axis]
+
+    def parameters(self) -> dict[str, float]:
+        """The offsets by name: ``{"ax": …, "ay": …, "az": …}`` (length units).
+
+        >>> Module("Ry", a=(0, 0, 20)).parameters()
+        {'ax': 0.0, 'ay': 0.0, 'az': 20.0}
+        """
+        return dict(zip(MODULE_OFFSETS, self.a, strict=True))
+
+    def with_parameters(self, **changes: float) -> Module:
+        """A copy with some offsets changed by name (``ax``, ``ay``, ``az``).
+
+        >>> Module("Ry", a=(0, 0, 20)).with_parameters(ax=5)
+        Module('Ry', a=(5.0, 0.0, 20.0))
+        """
+        unknown = sorted(set(changes) - set(MODULE_OFFSETS))
+        if unknown:
+            raise InvalidInputError(
+                unknown[0], changes[unknown[0]], "ax, ay or az", problem="not a module offset:"
+            )
+        offsets = {**self.parameters(), **changes}
+        return self.with_a([offsets[name] for name in MODULE_OFFSETS])
 
     def constant_length(self) -> float:
         """``|a|``, or 0 for a ``none`` module (it ignores ``a``).

@@ -31,8 +31,6 @@ from ._symbolic import (
     SymbolicChain,
     dh_values,
     exact_number,
-    link_parameters,
-    parameter_value,
     symbolic_chain,
 )
 
@@ -121,7 +119,7 @@ def _describe_link(link: Any, i: int, shown: dict[str, str], active: bool) -> st
         return f"identity (module {i} is inactive)"
     # A module and a DH row are described in their own words (kind and offsets, or the row).
     if isinstance(link, Module):
-        a = "(" + ", ".join(shown[name] for name in link_parameters(link)) + ")"
+        a = "(" + ", ".join(shown[name] for name in link.parameters()) + ")"
         if link.kind == "none":
             return "none (null module): identity"
         if link.kind == "fixed":
@@ -131,7 +129,7 @@ def _describe_link(link: Any, i: int, shown: dict[str, str], active: bool) -> st
     constant = DH_JOINT_PARAMETER.values()
     row = ", ".join(
         f"{DH_SYMBOLS[name]}{'0' if name in constant else ''} = {shown[name]}"
-        for name in link_parameters(link)
+        for name in link.parameters()
     )
     joint = DH_SYMBOLS[DH_JOINT_PARAMETER[link.joint_type]]
     return (
@@ -141,15 +139,15 @@ def _describe_link(link: Any, i: int, shown: dict[str, str], active: bool) -> st
 
 
 def _shown_values(link: Any, label: str, chain: SymbolicChain | None, precision: int) -> dict:
-    names = link_parameters(link)
+    parameters = link.parameters()
     if chain is None:
-        return {name: format_number(parameter_value(link, name), precision) for name in names}
+        return {name: format_number(value, precision) for name, value in parameters.items()}
     import sympy
 
     placed = {(place, name): symbol for place, name, symbol in chain.length_places}
     return {
-        name: sympy.sstr(placed.get((label, name), exact_number(parameter_value(link, name))))
-        for name in names
+        name: sympy.sstr(placed.get((label, name), exact_number(value)))
+        for name, value in parameters.items()
     }
 
 
@@ -237,8 +235,7 @@ def _numeric_derivation(robot: Robot, q: Any, precision: int) -> Derivation:
         factors: tuple = ()
         # Only a DH row is a product of elementary factors; a module is one table entry.
         if isinstance(link, DHLink) and active:
-            constants = {name: parameter_value(link, name) for name in link_parameters(link)}
-            amount = dh_values(link, constants, float(values[i]))
+            amount = dh_values(link, link.parameters(), float(values[i]))
             factors = tuple(
                 (
                     f"{kind}({format_number(amount[name], precision)})",

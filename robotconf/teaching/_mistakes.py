@@ -34,7 +34,7 @@ from ..kinematics import (
     dh_formula,
 )
 from ._expected import ExpectedMatrix
-from ._symbolic import sine_entries, with_parameter
+from ._symbolic import sine_entries
 
 __all__ = [
     "Candidate",
@@ -232,7 +232,7 @@ class _Context:
                 point[AXIS_NAMES.index(name[1])] = value
                 continue
             j = labels.index(label)
-            links[j] = with_parameter(links[j], name, value)
+            links[j] = links[j].with_parameters(**{name: value})
         return type(robot)(links, end_effector=point, active=robot.active, name=robot.name)
 
     def chain(self, i: int, mistakes: dict[int, str], units: str | None) -> list[np.ndarray]:

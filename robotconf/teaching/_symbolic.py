@@ -14,11 +14,10 @@ sympy is imported inside the functions, so ``import robotconf`` stays numpy-only
 
 from __future__ import annotations
 
-import dataclasses
 import math
 from dataclasses import dataclass, field
 from fractions import Fraction
-from typing import TYPE_CHECKING, Any, cast
+from typing import TYPE_CHECKING, Any
 
 from .._errors import InvalidInputError
 from .._validation import check_configuration
@@ -26,8 +25,6 @@ from ..kinematics import (
     AXIS_NAMES,
     DH_FACTORS,
     DH_JOINT_PARAMETER,
-    DH_LENGTHS,
-    DH_PARAMETERS,
     MODULE_OFFSETS,
     ROTATION_KINDS,
     TRANSLATION_KINDS,
@@ -53,10 +50,6 @@ __all__ = [
     "SymbolicChain",
     "symbolic_chain",
     "sine_entries",
-    "link_parameters",
-    "length_parameters",
-    "parameter_value",
-    "with_parameter",
     "dh_values",
 ]
 
@@ -258,53 +251,6 @@ def dh_factors(
     return [(kind, elementary_matrix(kind, values[name])) for kind, name in order]
 
 
-def link_parameters(link: Link) -> tuple[str, ...]:
-    """The names of a link's constant parameters, in table order.
-
-    ``ax, ay, az`` for a module, ``theta, d, a, alpha`` for a DH row.
-
-    >>> link_parameters(Module("Rz")), link_parameters(DHLink())
-    (('ax', 'ay', 'az'), ('theta', 'd', 'a', 'alpha'))
-    """
-    return MODULE_OFFSETS if isinstance(link, Module) else DH_PARAMETERS
-
-
-def length_parameters(link: Link) -> tuple[str, ...]:
-    """The lengths among a link's parameters; none for a ``none`` module (it ignores ``a``).
-
-    >>> length_parameters(Module("Ry")), length_parameters(DHLink()), length_parameters(Module(0))
-    (('ax', 'ay', 'az'), ('d', 'a'), ())
-    """
-    if link.joint_type == "none":
-        return ()
-    return tuple(name for name in link_parameters(link) if name in MODULE_OFFSETS + DH_LENGTHS)
-
-
-def parameter_value(link: Link, name: str) -> float:
-    """A link's parameter by name (:func:`link_parameters`): radians or length units.
-
-    >>> parameter_value(Module("Ry", a=(0, 0, 20)), "az"), parameter_value(DHLink(d=0.5), "d")
-    (20.0, 0.5)
-    """
-    if name in MODULE_OFFSETS:  # only a module has offsets
-        return float(cast(Module, link).a[MODULE_OFFSETS.index(name)])
-    return float(getattr(link, name))
-
-
-def with_parameter(link: Link, name: str, value: float) -> Link:
-    """A copy of a link with one parameter (:func:`link_parameters`) changed.
-
-    >>> with_parameter(Module("Ry", a=(0, 0, 20)), "ax", 5.0)
-    Module('Ry', a=(5.0, 0.0, 20.0))
-    """
-    changes: dict[str, Any] = {name: value}
-    if name in MODULE_OFFSETS:  # only a module has offsets
-        offsets = list(cast(Module, link).a)
-        offsets[MODULE_OFFSETS.index(name)] = value
-        changes = {"a": tuple(offsets)}
-    return dataclasses.replace(link, **changes)  # type: ignore[type-var]
-
-
 def dh_values(link: DHLink, parameters: dict[str, Any], q: Any) -> dict[str, Any]:
     """A DH row's four parameters with its coordinate added (θ0 + q or d0 + q).
 
@@ -367,8 +313,7 @@ def link_factors(
 
     lengths = lengths or {}
     values = {
-        name: lengths.get(name, exact_number(parameter_value(link, name)))
-        for name in link_parameters(link)
+        name: lengths.get(name, exact_number(value)) for name, value in link.parameters().items()
     }
     # The module table and the DH factor product are two different constructions.
     if isinstance(link, Module):
@@ -549,8 +494,8 @@ def symbolic_chain(
             transfer.append(sympy.eye(4))
             continue
         chosen = {
-            name: symbol_for(label, name, parameter_value(link, name))
-            for name in length_parameters(link)
+            name: symbol_for(label, name, link.parameters()[name])
+            for name in link.length_parameters()
         }
         link_f, matrix = link_factors(link, q_values[i], chosen)
         factors.append(link_f)
