@@ -24,9 +24,8 @@ from ..kinematics import (
     dh_formula,
     transfer_matrix,
 )
-from ._expected import step_name
 from ._formatting import format_number, latex_text
-from ._step import DerivationStep
+from ._step import DerivationStep, step_name
 from ._symbolic import (
     SymbolicChain,
     dh_values,

@@ -18,6 +18,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .._errors import InvalidInputError
+from ._step import step_name
 
 if TYPE_CHECKING:  # pragma: no cover
     import sympy
@@ -30,7 +31,6 @@ __all__ = [
     "as_expected",
     "evaluate",
     "sample_points",
-    "step_name",
 ]
 
 
@@ -82,33 +82,6 @@ def _name_order(name: str) -> tuple[str, int, str]:
     stem = name.rstrip("0123456789")
     number = name[len(stem) :]
     return (stem, int(number) if number else 0, name)
-
-
-def step_name(robot: Robot, name: Any) -> str:
-    """The canonical name of a step of a robot's derivation: ``A<i>``, ``M<i>`` or ``p_EE``.
-
-    Case, spaces and underscores do not matter; ``EE`` and ``P`` also name ``p_EE``.
-
-    Examples
-    --------
-    >>> from robotconf.kinematics import Module, Robot
-    >>> robot = Robot([Module("Rz"), Module("Ry")])
-    >>> step_name(robot, "m2"), step_name(robot, "A_1"), step_name(robot, "EE")
-    ('M2', 'A1', 'p_EE')
-    >>> step_name(robot, "M3")
-    Traceback (most recent call last):
-    ...
-    robotconf.InvalidInputError: name: unknown matrix name 'M3'; allowed: A1 … A2, M1 … M2 or p_EE
-    """
-    allowed = f"A1 … A{robot.n}, M1 … M{robot.n} or p_EE"
-    if not isinstance(name, str):
-        raise InvalidInputError("name", name, allowed, problem="not a matrix name:")
-    key = name.replace("_", "").replace(" ", "").upper()
-    if key in ("PEE", "EE", "P"):
-        return "p_EE"
-    if len(key) >= 2 and key[0] in "AM" and key[1:].isdigit() and 1 <= int(key[1:]) <= robot.n:
-        return key[0] + str(int(key[1:]))
-    raise InvalidInputError("name", name, allowed, problem="unknown matrix name")
 
 
 def expected_matrix(

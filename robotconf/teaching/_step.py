@@ -5,12 +5,13 @@ from __future__ import annotations
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
+from .._errors import InvalidInputError
 from ._formatting import latex_text, matrix_grid, matrix_latex, side_by_side
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..kinematics import Robot
 
-__all__ = ["DerivationStep"]
+__all__ = ["DerivationStep", "step_name"]
 
 
 @dataclass(frozen=True, eq=False)
@@ -86,3 +87,30 @@ class DerivationStep:
 
     def _repr_latex_(self) -> str:
         return "$$\\begin{aligned}\n" + self.latex() + "\n\\end{aligned}$$"
+
+
+def step_name(robot: Robot, name: Any) -> str:
+    """The canonical name of a step of a robot's derivation: ``A<i>``, ``M<i>`` or ``p_EE``.
+
+    Case, spaces and underscores do not matter; ``EE`` and ``P`` also name ``p_EE``.
+
+    Examples
+    --------
+    >>> from robotconf.kinematics import Module, Robot
+    >>> robot = Robot([Module("Rz"), Module("Ry")])
+    >>> step_name(robot, "m2"), step_name(robot, "A_1"), step_name(robot, "EE")
+    ('M2', 'A1', 'p_EE')
+    >>> step_name(robot, "M3")
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: name: unknown matrix name 'M3'; allowed: A1 … A2, M1 … M2 or p_EE
+    """
+    allowed = f"A1 … A{robot.n}, M1 … M{robot.n} or p_EE"
+    if not isinstance(name, str):
+        raise InvalidInputError("name", name, allowed, problem="not a matrix name:")
+    key = name.replace("_", "").replace(" ", "").upper()
+    if key in ("PEE", "EE", "P"):
+        return "p_EE"
+    if len(key) >= 2 and key[0] in "AM" and key[1:].isdigit() and 1 <= int(key[1:]) <= robot.n:
+        return key[0] + str(int(key[1:]))
+    raise InvalidInputError("name", name, allowed, problem="unknown matrix name")
