@@ -7,7 +7,7 @@ import pytest
 import sympy
 
 import robotconf as rc
-from robotconf._errors import InvalidInputError
+from robotconf import InvalidInputError
 from robotconf.teaching import assert_matrix, check_matrix, generic_candidates, is_rotation_like
 
 q1, q2, q3 = sympy.symbols("q1 q2 q3", real=True)
@@ -233,7 +233,7 @@ def test_hint_helpers_stay_numpy_only_and_never_evaluate_text():
 def test_rotation_pattern_names_where_the_kernel_puts_the_sines():
     import re
 
-    from robotconf.teaching._mistakes import ROTATION_PATTERN
+    from robotconf.teaching import ROTATION_PATTERN
 
     for axis, text in ROTATION_PATTERN.items():
         matrix = rc.transfer_matrix(f"R{axis}", 0.3)

@@ -246,7 +246,7 @@ def test_dh_factor_order_and_joint_parameter_come_from_the_conventions():
 @pytest.mark.parametrize("kind", ["Rx", "Ry", "Rz"])
 def test_sine_entries_match_the_numpy_kernel(kind):
     from robotconf.kinematics import kind_axis
-    from robotconf.teaching._symbolic import sine_entries
+    from robotconf.teaching import sine_entries
 
     minus, plus = sine_entries(kind_axis(kind))
     matrix = transfer_matrix(kind, 0.3)

@@ -23,7 +23,7 @@ from ._checker import assert_matrix, check_matrix
 from ._derivation import Derivation, derivation
 from ._expected import ExpectedMatrix, as_expected, evaluate, expected_matrix, sample_points
 from ._formatting import format_number, latex_text, matrix_grid, matrix_latex
-from ._mistakes import Candidate, generic_candidates, is_rotation_like
+from ._mistakes import ROTATION_PATTERN, Candidate, generic_candidates, is_rotation_like
 from ._step import DerivationStep
 from ._student_parser import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
 from ._symbolic import (
@@ -34,6 +34,7 @@ from ._symbolic import (
     link_factors,
     module_matrix,
     simplify_matrix,
+    sine_entries,
     symbolic_chain,
 )
 
@@ -55,6 +56,7 @@ __all__ = [
     "link_factors",
     "simplify_matrix",
     "exact_number",
+    "sine_entries",
     # expected answers and the checker
     "expected_matrix",
     "ExpectedMatrix",
@@ -67,6 +69,7 @@ __all__ = [
     "Candidate",
     "generic_candidates",
     "is_rotation_like",
+    "ROTATION_PATTERN",
     # student text
     "parse_expression",
     "parse_matrix",
