@@ -7,6 +7,7 @@ own message next to the control that caused it while the last valid robot stays.
 
 from __future__ import annotations
 
+import html
 import os
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
@@ -311,7 +312,8 @@ class Configurator:
         else:
             self.motion_section.mark_stale(robot)
         self.matrices.show(robot)
-        self.ee_label.value = f"<b>End-effector</b> <code>{end_effector_text(robot)}</code>"
+        shown = html.escape(end_effector_text(robot))
+        self.ee_label.value = f"<b>End-effector</b> <code>{shown}</code>"
 
     # -- header controls ----------------------------------------------------------------
 
