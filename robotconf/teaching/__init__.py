@@ -27,16 +27,14 @@ from ._mistakes import ROTATION_PATTERN, Candidate, generic_candidates, is_rotat
 from ._step import DerivationStep
 from ._student_parser import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
 from ._symbolic import (
-    SymbolicChain,
     dh_factors,
     elementary_matrix,
     exact_number,
     link_factors,
     module_matrix,
-    simplify_matrix,
     sine_entries,
-    symbolic_chain,
 )
+from ._symbolic_chain import SymbolicChain, simplify_matrix, symbolic_chain
 
 __all__ = [
     # derivations

@@ -2,7 +2,8 @@
 
 The paper validated its numbers with a second tool (Mathcad, Figure 15); a
 :class:`Derivation` shows the same chain of matrices in the notebook, numerically at one
-configuration (from the numpy core) or symbolically (from :mod:`robotconf.teaching._symbolic`).
+configuration (from the numpy core) or symbolically (from
+:mod:`robotconf.teaching._symbolic_chain`).
 """
 
 from __future__ import annotations
@@ -26,12 +27,8 @@ from ..kinematics import (
 )
 from ._formatting import format_number, latex_text
 from ._step import DerivationStep, step_name
-from ._symbolic import (
-    SymbolicChain,
-    dh_values,
-    exact_number,
-    symbolic_chain,
-)
+from ._symbolic import dh_values, exact_number
+from ._symbolic_chain import SymbolicChain, symbolic_chain
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..kinematics import Robot

@@ -210,7 +210,7 @@ class _Context:
         self.expected = expected
         self.robots = [robot] * k
         if expected.lengths:
-            from ._symbolic import symbolic_chain
+            from ._symbolic_chain import symbolic_chain
 
             places = symbolic_chain(robot, lengths=True, simplify=False).length_places
             self.robots = [self._with_lengths(places, env, i) for i in range(k)]
