@@ -312,8 +312,9 @@ class Configurator:
         else:
             self.motion_section.mark_stale(robot)
         self.matrices.show(robot)
-        shown = html.escape(end_effector_text(robot))
-        self.ee_label.value = f"<b>End-effector</b> <code>{shown}</code>"
+        self.ee_label.value = (
+            f"<b>End-effector</b> <code>{html.escape(end_effector_text(robot))}</code>"
+        )
 
     # -- header controls ----------------------------------------------------------------
 
