@@ -2,7 +2,7 @@
 or a prismatic joint slides along.
 
 The 3D scene draws its joint markers on these lines; the Jacobian uses the same screws
-(:func:`robotconf.kinematics._jacobian.joint_screws`), so the picture and the velocities agree.
+(:func:`robotconf.kinematics.joint_screws`), so the picture and the velocities agree.
 """
 
 from __future__ import annotations

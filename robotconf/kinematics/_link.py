@@ -123,7 +123,7 @@ class Link:
         """The derivative ``dᵏA/dqᵏ`` of the transfer matrix.
 
         Uses ``dᵏA/dqᵏ = P · Screw(q) · Gᵏ · Q`` with the joint generator ``G`` (see
-        :class:`~robotconf.kinematics._geometry.LinkGeometry`); zero for links without joint.
+        :class:`~robotconf.kinematics.LinkGeometry`); zero for links without joint.
 
         Parameters
         ----------

@@ -16,7 +16,7 @@ over the ``T`` samples:
       ``a_i = a_o + ω̇_i × d + ω_i × (ω_i × d) + 2 ω_{i−1} × z q̇ + z q̈`` (Coriolis).
 
     The end-effector is a point of the last body. The result equals ``J · q̇`` with the
-    geometric Jacobian (:func:`robotconf.kinematics._jacobian.jacobian`), which the tests check.
+    geometric Jacobian (:func:`robotconf.kinematics.jacobian`), which the tests check.
 
 ``numeric``
     Finite differences of the sampled positions, as Simulink's Derivative block does.

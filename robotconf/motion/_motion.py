@@ -94,7 +94,7 @@ class Motion:
     def quantity(self, name: str) -> np.ndarray:
         """One quantity of every point, shape (T, n + 1, 3): points M1…Mn, EE; x, y, z.
 
-        ``name`` is one of :data:`~robotconf.motion._dva.QUANTITIES`.
+        ``name`` is one of :data:`~robotconf.motion.QUANTITIES`.
         """
         if name not in QUANTITIES:
             raise InvalidInputError("quantity", name, f"one of {QUANTITIES}")

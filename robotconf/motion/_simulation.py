@@ -81,8 +81,8 @@ def simulate(
     method : {"analytic", "numeric"}
         ``analytic``: exact chain rule with the signals' own derivatives (default);
         ``numeric``: second-order finite differences of the sampled positions, like
-        Simulink's Derivative block (see :mod:`robotconf.motion._dva`). Then ``Motion.qd`` and
-        ``Motion.qdd`` are finite differences too.
+        Simulink's Derivative block (see :func:`robotconf.motion.numeric_dva`). Then
+        ``Motion.qd`` and ``Motion.qdd`` are finite differences too.
     max_sample_points : int
         Refuse runs with more samples × points (points = modules + EE); default
         :data:`MAX_SAMPLE_POINTS`. Samples alone never exceed :data:`MAX_TIME_SAMPLES`.

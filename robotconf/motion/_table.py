@@ -1,4 +1,4 @@
-"""pandas views of a :class:`~robotconf.motion._simulation.Motion`: table, statistics, export.
+"""pandas views of a :class:`~robotconf.motion.Motion`: table, statistics, export.
 
 Every number here comes from the motion's core arrays; pandas only labels them, so the
 module imports pandas inside its functions and ``import robotconf`` stays numpy-only.
@@ -56,7 +56,7 @@ def motion_table(motion: Motion) -> pd.DataFrame:
     Examples
     --------
     >>> import robotconf as rc
-    >>> from robotconf.motion._simulation import simulate
+    >>> from robotconf.motion import simulate
     >>> from robotconf.signals import Ramp
     >>> robot = rc.Robot([rc.Module("Tz")], end_effector=(1, 0, 0))
     >>> table = simulate(robot, {"q1": Ramp(slope=2.0)}, t_end=1.0, dt=0.5).table
@@ -90,7 +90,7 @@ def motion_stats(motion: Motion) -> pd.DataFrame:
     Examples
     --------
     >>> import robotconf as rc
-    >>> from robotconf.motion._simulation import simulate
+    >>> from robotconf.motion import simulate
     >>> from robotconf.signals import RepeatingSequence
     >>> robot = rc.Robot([rc.Module("Tx")])
     >>> stats = simulate(robot, {"q1": RepeatingSequence()}, t_end=3.0, dt=0.5).stats()
@@ -139,7 +139,7 @@ def compare_motions(first: Motion, second: Motion) -> pd.DataFrame:
     Examples
     --------
     >>> import robotconf as rc
-    >>> from robotconf.motion._simulation import simulate
+    >>> from robotconf.motion import simulate
     >>> from robotconf.signals import Sine
     >>> robot = rc.Robot([rc.Module("Rz")], end_effector=(1, 0, 0))
     >>> exact = simulate(robot, {"q1": Sine()}, t_end=1.0, dt=1e-3)

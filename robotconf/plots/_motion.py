@@ -91,7 +91,7 @@ def plot_motion(
     Examples
     --------
     >>> import robotconf as rc
-    >>> from robotconf.motion._simulation import simulate
+    >>> from robotconf.motion import simulate
     >>> from robotconf.signals import Sine
     >>> robot = rc.Robot([rc.Module("Rz")], end_effector=(1, 0, 0))
     >>> fig = plot_motion(simulate(robot, {"q1": Sine()}, t_end=1.0, dt=0.01), "EE")

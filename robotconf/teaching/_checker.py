@@ -251,7 +251,7 @@ def check_matrix(
     Examples
     --------
     >>> from robotconf import Module, Robot
-    >>> from robotconf.teaching._expected import expected_matrix
+    >>> from robotconf.teaching import expected_matrix
     >>> robot = Robot([Module("Rz"), Module("Ry", a=(0, 0, 20))])
     >>> wrong = "[[cos(q2), 0, -sin(q2), 0], [0, 1, 0, 0], [sin(q2), 0, cos(q2), 20], [0, 0, 0, 1]]"
     >>> result = check_matrix(wrong, expected_matrix(robot, "A2"))

@@ -6,7 +6,7 @@ sentence that explains the mistake. The checker recognises a mistake when the st
 wrong entries agree with a candidate.
 
 Context-aware candidates need the robot and the matrix name (an
-:class:`~robotconf.teaching._expected.ExpectedMatrix` from ``expected_matrix`` or a derivation
+:class:`~robotconf.teaching.ExpectedMatrix` from ``expected_matrix`` or a derivation
 step): wrong rotation direction of one module, offset after the rotation, a missing
 offset or end-effector point, the other DH convention, degrees read as radians (and the
 reverse), multiplication in the wrong order, and for a DH row the twist α with the wrong
