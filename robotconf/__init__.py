@@ -20,6 +20,7 @@ array([70.,  0., 20.])
 from typing import Any
 
 from . import presets, signals
+from ._budget import memory_budget, set_memory_budget
 from ._errors import InvalidInputError
 from ._validation import check_finite_number, check_joint_values, check_vector3
 from .io import Setup, load, load_setup, to_urdf
@@ -80,6 +81,8 @@ __all__ = [
     "transfer_matrix",
     "dh_matrix",
     "InvalidInputError",
+    "memory_budget",
+    "set_memory_budget",
     # kinematics
     "robot_points",
     "jacobian",

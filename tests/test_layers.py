@@ -24,7 +24,7 @@ import pytest
 
 PACKAGE = Path(__file__).resolve().parents[1] / "robotconf"
 
-#: Lowest first. ``_base`` is the shared ``robotconf._errors`` and ``robotconf._validation``.
+#: Lowest first. ``_base`` is the shared ``robotconf._errors``, ``_validation`` and ``_budget``.
 LAYERS: tuple[tuple[str, ...], ...] = (
     ("_base",),
     ("kinematics", "signals"),
@@ -36,7 +36,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("__init__", "__main__"),
 )
 PRESENTATION = ("plots", "scene", "panel", "cli")
-SHARED_BASE = ("robotconf._errors", "robotconf._validation")
+SHARED_BASE = ("robotconf._errors", "robotconf._validation", "robotconf._budget")
 
 #: The only places where the core reaches up a layer: methods that hand over to a richer
 #: layer when called (a robot writes its file, a motion draws itself), named
