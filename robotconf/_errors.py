@@ -2,13 +2,15 @@
 
 from __future__ import annotations
 
+import re
 from typing import Any
 
 __all__ = ["InvalidInputError"]
 
 
 def _short_repr(value: Any, limit: int = 80) -> str:
-    text = repr(value)
+    # One line, so a panel label, a CLI error and a log entry stay one line for arrays too.
+    text = re.sub(r"\s*\n\s*", " ", repr(value))
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
