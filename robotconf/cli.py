@@ -1,33 +1,52 @@
 """``robotconf report``: every result of the paper's §3 for one robot, written to a folder.
 
 Runs headless (matplotlib's Agg canvas, no pyplot) and reports one progress line per
-step. Bad input — a missing or corrupt file, an unknown preset, a bad signal spec, a
-non-positive time step — ends with exit code 2 and one line ``robotconf: error: …``;
-anything else that fails is a bug and keeps its traceback.
+step. Robot files come from students and instructors and are treated as untrusted: every
+name, label and unit they carry is escaped in ``report.md`` and drawn literally in the
+figures and the 3D scene.
+
+Every failure ends with exit status 2 and exactly one line on standard error, never a
+traceback: ``robotconf: error: …`` for input the user can fix (a missing or corrupt
+file, an unknown preset, a bad signal spec, a non-positive time step, a run that needs
+more memory than the budget, results that overflow, an unwritable folder), and
+``robotconf: internal error: <type>: …`` for a bug. Ctrl-C ends with status 130.
 """
 
 from __future__ import annotations
 
 import argparse
 import sys
+import unicodedata
+import warnings
 from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, NoReturn
 
-from .motion import METHODS, SimulationSettings
+from ._budget import check_memory
+from .motion import METHODS, QUANTITIES, SimulationSettings
 from .signals import SPEC_HELP, parse_signal_spec
 
 if TYPE_CHECKING:  # pragma: no cover
+    import pandas as pd
     from matplotlib.figure import Figure
 
     from .kinematics import Robot
     from .motion import Motion
     from .signals import Signal
 
-__all__ = ["main", "EXIT_BAD_INPUT", "PRESET_DEMOS"]
+__all__ = [
+    "main",
+    "markdown_text",
+    "EXIT_BAD_INPUT",
+    "EXIT_INTERRUPTED",
+    "PRESET_DEMOS",
+    "MAX_MODULE_PLOTS",
+]
 
-#: Exit status for bad input (argparse's convention).
+#: Exit status for every failure (argparse's convention for bad input).
 EXIT_BAD_INPUT = 2
+#: Exit status after Ctrl-C (128 + SIGINT, the shell's convention).
+EXIT_INTERRUPTED = 130
 
 #: Signals used for a preset when none is given: the paper drives q3 of its R_zR_yR_y
 #: robot with Simulink's default Repeating Sequence (§3, Figure 16).
@@ -39,12 +58,33 @@ DEFAULT_T_END = 10.0
 DEFAULT_DT = SimulationSettings.dt
 DPI = 100
 
+#: Modules that get a dva_M<i>.png of their own. Each 3 × 3 figure takes about 0.6 s to
+#: lay out and save, so a 64-module chain would spend 40 s on them; the rest are one
+#: ``motion.plot(i)`` away (report.md says so).
+MAX_MODULE_PLOTS = 16
+
+#: Peak memory of simulate + table + statistics + CSV, in copies of the results (15
+#: floats per sample and point). Measured: 3.2 (results, kernel work arrays, the
+#: statistics' sorted copy); pandas writes the CSV in chunks.
+RESULT_COPIES = 4
+
+#: Longest error message printed (characters); the rest is cut, it stays one line.
+MAX_MESSAGE_CHARS = 1000
+
 DESCRIPTION = """\
 Write a report for one robot: step-by-step matrices (matrices.txt, matrices.tex), the
 DVA table (dva.csv), statistics (statistics.csv), plots (robot.png = the paper's
-Figure 14, q.png = Figure 16, dva_EE.png = Figures 17-19, dva_M<i>.png per module) and
-the animated 3D scene (scene.html, self-contained). `robotconf report --preset paper
---out out/` reproduces the paper's Figures 13-19."""
+Figure 14, q.png = Figure 16, dva_EE.png = Figures 17-19, dva_M<i>.png for the first
+16 modules) and the animated 3D scene (scene.html, self-contained). `robotconf report
+--preset paper --out out/` reproduces the paper's Figures 13-19."""
+
+SYMBOLIC_TOO_LONG = (
+    "No symbolic matrices: this chain is too long for them by default, as sympy's "
+    "time grows exponentially with the rotations in the chain, from seconds to many "
+    "minutes (robotconf.teaching.symbolic_fits). To get them anyway, run "
+    "rc.derivation(robot, symbolic=True) in a notebook and accept the wait."
+)
+SYMBOLIC_OFF = "No symbolic matrices: --no-symbolic was given."
 
 
 class BadInput(Exception):
@@ -86,11 +126,82 @@ def _parser() -> argparse.ArgumentParser:
     report.add_argument("--out", required=True, metavar="DIR", help="output folder (created)")
     report.add_argument("--length-unit", default="length", help="axis label unit, e.g. mm or m")
     report.add_argument(
-        "--no-symbolic", action="store_true", help="skip the symbolic matrices (long chains)"
+        "--no-symbolic",
+        action="store_true",
+        help="skip the symbolic matrices (long chains skip them anyway)",
     )
     report.add_argument("--no-scene", action="store_true", help="skip scene.html")
     report.add_argument("--quiet", action="store_true", help="no progress lines")
     return parser
+
+
+# -- text from untrusted files ----------------------------------------------------------
+
+# Bidirectional-text controls reorder what a reader sees; shown as their code instead.
+_BIDI_CONTROLS = frozenset(
+    "\u061c\u200e\u200f\u202a\u202b\u202c\u202d\u202e\u2066\u2067\u2068\u2069"
+)
+_MARKDOWN_ENTITIES = {"&": "&amp;", "<": "&lt;", ">": "&gt;"}
+# What means something inline in CommonMark or GitHub Markdown (code, emphasis, links and
+# images, tables, strikethrough, $ math, attribute and superscript extensions) gets a
+# backslash, which CommonMark allows before any ASCII punctuation. User text never starts
+# a line, so list and heading markers need nothing; "(" only matters after "]".
+_MARKDOWN_PUNCTUATION = frozenset("\\`*_{}[]#|$~^")
+
+
+def _visible(text: str) -> str:
+    """``text`` on one line: control characters become spaces, bidi controls ``\\u202e``."""
+    out = []
+    for char in text:
+        if char in _BIDI_CONTROLS:
+            out.append(f"\\u{ord(char):04x}")
+        elif unicodedata.category(char) in ("Cc", "Zl", "Zp"):
+            out.append(" ")
+        else:
+            out.append(char)
+    return "".join(out)
+
+
+def markdown_text(text: object) -> str:
+    r"""User text as Markdown that shows exactly that text, on one line, with no markup.
+
+    Parameters
+    ----------
+    text : object
+        A name, label, unit or file name (``str()`` of anything else).
+
+    Returns
+    -------
+    str
+        ``<``, ``>`` and ``&`` as HTML entities, Markdown punctuation backslash-escaped,
+        line breaks and other control characters as spaces.
+
+    Examples
+    --------
+    >>> print(markdown_text("<img src=x onerror=alert(1)> *$x$* | [a](b)\n# h"))
+    &lt;img src=x onerror=alert(1)&gt; \*\$x\$\* \| \[a\](b) \# h
+    """
+    escaped = []
+    for char in _visible(str(text)):
+        if char in _MARKDOWN_ENTITIES:
+            escaped.append(_MARKDOWN_ENTITIES[char])
+        elif char in _MARKDOWN_PUNCTUATION:
+            escaped.append("\\" + char)
+        else:
+            escaped.append(char)
+    return "".join(escaped)
+
+
+def _one_line(text: object) -> str:
+    """A message for the terminal: one line, no control characters, bounded length.
+
+    >>> _one_line("a\\n  b\\x1b[31m")
+    'a b [31m'
+    """
+    line = " ".join(_visible(str(text)).split())
+    if len(line) > MAX_MESSAGE_CHARS:
+        line = line[: MAX_MESSAGE_CHARS - 1] + "…"
+    return line
 
 
 # -- steps ------------------------------------------------------------------------------
@@ -127,8 +238,59 @@ def _settings(
     return base.with_changes(**{key: value for key, value in given.items() if value is not None})
 
 
-def _write_matrices(robot: Robot, out: Path, symbolic: bool) -> list[str]:
-    from .teaching import derivation
+def _check_report_memory(robot: Robot, settings: SimulationSettings) -> None:
+    """Refuse, before anything is allocated, a run whose results would not fit in memory."""
+    samples = settings.samples
+    values = float(samples) * (robot.n + 1) * len(QUANTITIES) * 3
+    coordinates = 3.0 * robot.n * samples  # q, q̇, q̈
+    check_memory(
+        "dt",
+        settings.dt,
+        8.0 * (RESULT_COPIES * values + coordinates),
+        "a larger dt or a shorter run (t_end − t0), or a larger ROBOTCONF_MEMORY_BUDGET",
+    )
+
+
+def _check_finite(motion: Motion, stats: pd.DataFrame) -> None:
+    """Refuse results that overflowed to inf or NaN, naming the first such column.
+
+    The inputs were finite (the core checks them), but large lengths or fast signals can
+    still overflow along the chain or in a statistic (RMS squares its values).
+    """
+    import numpy as np
+
+    data = motion.columns()
+    if not np.isfinite(data).all():
+        column, sample = np.argwhere(~np.isfinite(data))[0]
+        point, rest = divmod(int(column), 3 * len(QUANTITIES))
+        quantity, axis = divmod(rest, 3)
+        raise BadInput(
+            f"dva.csv: the {QUANTITIES[quantity]} ({'xyz'[axis]}) of {motion.points[point]} "
+            f"overflows to inf or NaN at t = {motion.t[sample]:g} s; allowed: smaller "
+            "lengths and signal values (well below 1e308)"
+        )
+    table = stats.to_numpy()
+    if not np.isfinite(table).all():
+        row, column = np.argwhere(~np.isfinite(table))[0]
+        point, quantity, axis = stats.index[row]
+        raise BadInput(
+            f"statistics.csv: the {stats.columns[column]} of the {quantity} ({axis}) of "
+            f"{point} overflows to inf or NaN; allowed: smaller lengths and signal values "
+            "(well below 1e154, as squares enter the RMS)"
+        )
+
+
+def _symbolic_state(robot: Robot, wanted: bool) -> str:
+    """``"built"``, ``"off"`` (--no-symbolic) or ``"too long"`` (over the symbolic limit)."""
+    from .teaching import symbolic_fits
+
+    if not wanted:
+        return "off"
+    return "built" if symbolic_fits(robot) else "too long"
+
+
+def _write_matrices(robot: Robot, out: Path, symbolic: str) -> list[str]:
+    from .teaching import derivation, latex_text
 
     numeric = derivation(robot)
     text = [
@@ -140,10 +302,14 @@ def _write_matrices(robot: Robot, out: Path, symbolic: bool) -> list[str]:
         "\\section*{Forward kinematics at the configured position}",
         "\\[" + numeric.latex() + "\\]",
     ]
-    if symbolic:
+    if symbolic == "built":
         steps = derivation(robot, symbolic=True, lengths=True)
         text += ["", "Symbolic (q1 … qn and lengths l1, l2, … as symbols)", "=" * 70, str(steps)]
         tex += ["\\section*{Symbolic}", "\\[" + steps.latex() + "\\]"]
+    else:
+        note = SYMBOLIC_OFF if symbolic == "off" else SYMBOLIC_TOO_LONG
+        text += ["", note]
+        tex += ["\\section*{Symbolic}", latex_text(note)]
     (out / "matrices.txt").write_text("\n".join(text) + "\n", encoding="utf-8")
     document = [
         "\\documentclass{article}",
@@ -165,7 +331,7 @@ def _save(fig: Figure, path: Path) -> None:
 def _write_plots(motion: Motion, out: Path, unit: str) -> list[str]:
     import numpy as np
 
-    from .plots import plot_coordinates, plot_robot
+    from .plots import plot_coordinates, plot_motion, plot_robot
 
     written = []
     # One decimal as in the paper's Figure 14, three for arms measured in metres.
@@ -174,15 +340,18 @@ def _write_plots(motion: Motion, out: Path, unit: str) -> list[str]:
     _save(plot_robot(motion.robot, length_unit=unit, digits=digits), out / "robot.png")
     _save(plot_coordinates(motion, unit), out / "q.png")
     written += ["robot.png", "q.png"]
-    for point in ("EE", *motion.robot.module_names):
-        name = f"dva_{_file_part(point)}.png"
-        _save(motion.plot(point, displacement=True, length_unit=unit), out / name)
+    _save(plot_motion(motion, "EE", displacement=True, length_unit=unit), out / "dva_EE.png")
+    written.append("dva_EE.png")
+    # By index, never by name: the file name is always safe and always distinct.
+    for i in range(min(motion.robot.n, MAX_MODULE_PLOTS)):
+        name = _module_plot(i)
+        _save(plot_motion(motion, i, displacement=True, length_unit=unit), out / name)
         written.append(name)
     return written
 
 
-def _file_part(name: str) -> str:
-    return "".join(c if c.isalnum() or c in "-_" else "_" for c in name) or "point"
+def _module_plot(index: int) -> str:
+    return f"dva_M{index + 1}.png"
 
 
 def _write_scene(motion: Motion, out: Path) -> list[str]:
@@ -195,35 +364,56 @@ def _write_scene(motion: Motion, out: Path) -> list[str]:
     return ["scene.html"]
 
 
-def _write_summary(motion: Motion, source: str, out: Path, files: list[str]) -> None:
-    from .kinematics import robot_points
+_ABOUT = {
+    "matrices.txt": "A_i, M_i, p_EE step by step (Figure 13), numeric and symbolic",
+    "matrices.tex": "the same as LaTeX",
+    "dva.csv": "position, displacement, velocity, acceleration of every point",
+    "statistics.csv": "Simulink Scope signal statistics of every column",
+    "robot.png": "the robot with labelled points (Figure 14)",
+    "q.png": "driven coordinates over time (Figure 16)",
+    "dva_EE.png": "EE displacement, velocity, acceleration (Figures 17-19)",
+    "scene.html": "animated 3D scene, opens offline in a browser",
+}
+
+
+def _write_summary(motion: Motion, source: str, out: Path, files: list[str], symbolic: str) -> None:
+    """report.md: every user-provided string goes through :func:`markdown_text`."""
+    from .kinematics import format_point, robot_points
 
     robot = motion.robot
+    signals = ", ".join(f"{k} = {v!r}" for k, v in motion.signals.items()) or "none"
     lines = [
-        f"# robotconf report: {robot.name or 'Robot'} ({source})",
+        f"# robotconf report: {markdown_text(robot.name or 'Robot')} ({markdown_text(source)})",
         "",
         f"{robot.n} modules; t = {motion.t[0]:g} … {motion.t[-1]:g} s, dt = {motion.dt:g} s, "
-        f"{motion.method} derivatives; signals: "
-        + (", ".join(f"{k} = {v!r}" for k, v in motion.signals.items()) or "none"),
+        f"{motion.method} derivatives; signals: {markdown_text(signals)}",
         "",
         "Points at the configured position (Figure 14):",
         "",
-        *[f"- {point}" for point in robot_points(robot)],
+        *[f"- {markdown_text(format_point(name, xyz))}" for name, xyz in robot_points(robot)],
         "",
-        "| file | content |",
-        "|---|---|",
     ]
-    about = {
-        "matrices.txt": "A_i, M_i, p_EE step by step (Figure 13), numeric and symbolic",
-        "matrices.tex": "the same as LaTeX",
-        "dva.csv": "position, displacement, velocity, acceleration of every point",
-        "statistics.csv": "Simulink Scope signal statistics of every column",
-        "robot.png": "the robot with labelled points (Figure 14)",
-        "q.png": "driven coordinates over time (Figure 16)",
-        "dva_EE.png": "EE displacement, velocity, acceleration (Figures 17-19)",
-        "scene.html": "animated 3D scene, opens offline in a browser",
-    }
-    lines += [f"| {f} | {about.get(f, 'DVA of module ' + f[4:-4])} |" for f in files]
+    if symbolic != "built":
+        note = SYMBOLIC_OFF if symbolic == "off" else SYMBOLIC_TOO_LONG
+        lines += [markdown_text(note), ""]
+    if robot.n > MAX_MODULE_PLOTS:
+        lines += [
+            f"DVA figures are written for modules 1 to {MAX_MODULE_PLOTS} of {robot.n}; "
+            "draw another with `rc.plot_motion(motion, i)` (i = 0-based module index).",
+            "",
+        ]
+    names = robot.module_names
+    about = dict(_ABOUT)
+    if symbolic != "built":
+        about["matrices.txt"] = "A_i, M_i, p_EE step by step (Figure 13), numeric (see the note)"
+    about.update(
+        {
+            _module_plot(i): f"DVA of module {i + 1} ({markdown_text(names[i])})"
+            for i in range(robot.n)
+        }
+    )
+    lines += ["| file | content |", "|---|---|"]
+    lines += [f"| {markdown_text(f)} | {about.get(f, '')} |" for f in files]
     (out / "report.md").write_text("\n".join(lines) + "\n", encoding="utf-8")
 
 
@@ -240,18 +430,27 @@ def _report(args: argparse.Namespace) -> int:
         name, signal = parse_signal_spec(spec)
         signals[name] = signal
     settings = _settings(args, file_settings)
+    _check_report_memory(robot, settings)
+    symbolic = _symbolic_state(robot, not args.no_symbolic)
     total = 7 - args.no_scene
-    say(f"[1/{total}] robot from {source}: {robot.name or 'Robot'}, {robot.n} modules")
+    title = _one_line(robot.name or "Robot")
+    say(f"[1/{total}] robot from {_one_line(source)}: {title}, {robot.n} modules")
     motion = simulate(robot, signals, **settings.to_dict())
+    stats = motion.stats()
+    _check_finite(motion, stats)
     say(
         f"[2/{total}] simulated {motion.t.size} samples ({motion.method}), signals: "
         + (", ".join(f"{k}={v!r}" for k, v in motion.signals.items()) or "none")
     )
-    out.mkdir(parents=True, exist_ok=True)
-    files = _write_matrices(robot, out, symbolic=not args.no_symbolic)
-    say(f"[3/{total}] {', '.join(files)}")
+    try:
+        out.mkdir(parents=True, exist_ok=True)
+    except OSError as error:
+        raise BadInput(f"--out: cannot create {str(out)!r}: {error.strerror or error}") from None
+    files = _write_matrices(robot, out, symbolic)
+    skipped = {"off": " (symbolic: --no-symbolic)", "too long": " (symbolic: chain too long)"}
+    say(f"[3/{total}] {', '.join(files)}{skipped.get(symbolic, '')}")
     motion.to_csv(out / "dva.csv")
-    motion.stats().to_csv(out / "statistics.csv")
+    stats.to_csv(out / "statistics.csv")
     files += ["dva.csv", "statistics.csv"]
     say(f"[4/{total}] dva.csv, statistics.csv")
     plots = _write_plots(motion, out, args.length_unit)
@@ -261,9 +460,20 @@ def _report(args: argparse.Namespace) -> int:
         scene = _write_scene(motion, out)
         files += scene
         say(f"[6/{total}] scene.html")
-    _write_summary(motion, source, out, files)
-    say(f"[{total}/{total}] report.md — done: {out}")
+    _write_summary(motion, source, out, files, symbolic)
+    say(f"[{total}/{total}] report.md — done: {_one_line(out)}")
     return 0
+
+
+# -- entry point ------------------------------------------------------------------------
+
+#: Errors whose message tells the user what to change (InvalidInputError is a ValueError).
+_USER_ERRORS = (BadInput, ValueError, ArithmeticError, OSError)
+
+
+def _fail(message: str) -> int:
+    print(f"robotconf: {_one_line(message)}", file=sys.stderr)
+    return EXIT_BAD_INPUT
 
 
 def main(argv: Sequence[str] | None = None) -> int:
@@ -277,7 +487,9 @@ def main(argv: Sequence[str] | None = None) -> int:
     Returns
     -------
     int
-        0 on success, 2 on bad input (after printing ``robotconf: error: …``).
+        0 on success; 2 on any failure, after printing one line on standard error
+        (``robotconf: error: …``, or ``robotconf: internal error: <type>: …`` for a bug);
+        130 after Ctrl-C.
 
     Examples
     --------
@@ -285,11 +497,20 @@ def main(argv: Sequence[str] | None = None) -> int:
     2
     """
     try:
-        args = _parser().parse_args(argv)
-        return _report(args)
+        # stderr carries the one error line and nothing else: numpy's overflow warnings
+        # are replaced by explicit checks, and font or layout warnings change no result.
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            args = _parser().parse_args(argv)
+            return _report(args)
     except SystemExit as done:  # --help
         return done.code if isinstance(done.code, int) else 0
-    except (BadInput, ValueError, OSError) as error:
-        message = " ".join(str(error).split())
-        print(f"robotconf: error: {message}", file=sys.stderr)
-        return EXIT_BAD_INPUT
+    except KeyboardInterrupt:
+        print("robotconf: interrupted", file=sys.stderr)
+        return EXIT_INTERRUPTED
+    except _USER_ERRORS as error:
+        return _fail(f"error: {error}")
+    except MemoryError:
+        return _fail("error: out of memory; allowed: a larger dt or a shorter run (t_end − t0)")
+    except Exception as error:  # noqa: BLE001 - a bug, but still one line and exit 2
+        return _fail(f"internal error: {type(error).__name__}: {error}")

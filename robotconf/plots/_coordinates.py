@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 from ..kinematics import JOINT_UNITS
 from ._figures import new_figure
+from ._plain_text import PLAIN
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -47,9 +48,9 @@ def plot_coordinates(motion: Motion, length_unit: str = "length") -> Figure:
         unit = robot.modules[i].unit
         unit = length_unit if unit == JOINT_UNITS["prismatic"] else unit
         ax.plot(motion.t, motion.q[:, i], lw=1.4)
-        ax.set_ylabel(f"{name} [{unit}]" if unit else name)
+        ax.set_ylabel(f"{name} [{unit}]" if unit else name, **PLAIN)
         signal = motion.signals.get(name)
-        ax.set_title(f"{name}(t) = {signal!r}" if signal is not None else f"{name}(t)")
+        ax.set_title(f"{name}(t) = {signal!r}" if signal is not None else f"{name}(t)", **PLAIN)
         ax.grid(True, alpha=0.3)
     axes[-1].set_xlabel("time (s)")
     return fig

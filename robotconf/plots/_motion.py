@@ -11,6 +11,7 @@ from typing import TYPE_CHECKING
 import numpy as np
 
 from ..kinematics import AXIS_NAMES
+from ._plain_text import PLAIN
 
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
@@ -119,17 +120,17 @@ def plot_motion(
             ax.plot(t, values[:, index, c], lw=1.2)
             ax.grid(True, alpha=0.3)
             if r == 0:
-                ax.set_title(f"{point}: {axis}")
+                ax.set_title(f"{point}: {axis}", **PLAIN)
             if c == 0:
-                ax.set_ylabel(f"{name} [{unit}]")
+                ax.set_ylabel(f"{name} [{unit}]", **PLAIN)
             if r == 2:
                 ax.set_xlabel("time (s)")
                 if kinks.size <= MAX_KINK_LINES:
                     for k in kinks:
                         ax.axvline(k, color="tab:red", lw=0.6, alpha=0.4, ls="--")
     title = f"{motion.robot.name or 'Robot'}: {point} ({motion.method} derivatives)"
-    fig.suptitle(title)
+    fig.suptitle(title, **PLAIN)
     if note is not None:
-        fig.text(0.01, 0.0, note, fontsize=8, wrap=True, va="bottom", ha="left")
+        fig.text(0.01, 0.0, note, fontsize=8, wrap=True, va="bottom", ha="left", **PLAIN)
         fig.get_layout_engine().set(rect=(0.0, 0.07, 1.0, 0.93))  # type: ignore[union-attr,call-arg]
     return fig

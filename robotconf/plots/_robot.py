@@ -15,6 +15,7 @@ import numpy as np
 from .._errors import InvalidInputError
 from .._validation import check_flag
 from ..kinematics import AXIS_NAMES, format_point, robot_points
+from ._plain_text import PLAIN
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -80,7 +81,9 @@ def plot_robot(
     -------
     matplotlib.figure.Figure
         The figure holding the axes. Artists carry labels: the line ``"links"``, the
-        markers ``"modules"`` and ``"end-effector"``, the triads ``"frame <name> x"``…
+        markers ``"modules"`` and ``"end-effector"``, the triads ``"frame T0 x"``,
+        ``"frame M<i> y"``… (``i`` = 1 … n by position, whatever the module's name).
+        Names and units are drawn literally (no mathtext).
 
     Raises
     ------
@@ -123,11 +126,13 @@ def plot_robot(
     if labels:
         offset = 0.04 * half
         for names, xyz in _coincident(points, 1e-9 * half):
-            ax.text(*(xyz + offset), format_point(", ".join(names), xyz, digits), fontsize=9)
+            text = format_point(", ".join(names), xyz, digits)
+            ax.text(*(xyz + offset), text, fontsize=9, **PLAIN)
     if frames:
         poses = robot.frame_poses(q)
         size = 0.15 * 2 * half
-        named = [("T0", np.eye(4)), *zip(robot.module_names, poses, strict=True)]
+        # Keyed by position, not by name: two modules may share a name.
+        named = [("T0", np.eye(4)), *((f"M{i + 1}", pose) for i, pose in enumerate(poses))]
         for name, pose in named:
             for k, axis in enumerate(AXIS_NAMES):
                 tip = pose[:3, 3] + size * pose[:3, k]
@@ -139,8 +144,8 @@ def plot_robot(
     ax.set_ylim(center[1] - half, center[1] + half)
     ax.set_zlim(center[2] - half, center[2] + half)
     ax.set_box_aspect((1, 1, 1))
-    ax.set_xlabel(f"x [{length_unit}]")
-    ax.set_ylabel(f"y [{length_unit}]")
-    ax.set_zlabel(f"z [{length_unit}]")
-    ax.set_title(f"{robot.name or 'Robot'}: modules (green) and end-effector (red)")
+    ax.set_xlabel(f"x [{length_unit}]", **PLAIN)
+    ax.set_ylabel(f"y [{length_unit}]", **PLAIN)
+    ax.set_zlabel(f"z [{length_unit}]", **PLAIN)
+    ax.set_title(f"{robot.name or 'Robot'}: modules (green) and end-effector (red)", **PLAIN)
     return ax.figure

@@ -11,6 +11,7 @@ import numpy as np
 
 from .._validation import check_integer
 from ..kinematics import AXIS_NAMES
+from ._plain_text import PLAIN
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -68,9 +69,9 @@ def plot_workspace(
     fig = new_figure(figsize)
     ax3d = fig.add_subplot(2, 2, 1, projection="3d")
     ax3d.scatter(shown[:, 0], shown[:, 1], shown[:, 2], s=1, color=color, alpha=0.3)
-    ax3d.set_xlabel(labels[0])
-    ax3d.set_ylabel(labels[1])
-    ax3d.set_zlabel(labels[2])
+    ax3d.set_xlabel(labels[0], **PLAIN)
+    ax3d.set_ylabel(labels[1], **PLAIN)
+    ax3d.set_zlabel(labels[2], **PLAIN)
     ax3d.set_title("3D")
     # Equal scaling, so a sphere looks like one.
     lo, hi = ws.bounds
@@ -82,13 +83,13 @@ def plot_workspace(
     for k, (title, i, j) in enumerate(PROJECTIONS):
         ax = fig.add_subplot(2, 2, k + 2)
         ax.scatter(shown[:, i], shown[:, j], s=1, color=color, alpha=0.3, rasterized=True)
-        ax.set_xlabel(labels[i])
-        ax.set_ylabel(labels[j])
+        ax.set_xlabel(labels[i], **PLAIN)
+        ax.set_ylabel(labels[j], **PLAIN)
         ax.set_title(title)
         ax.set_aspect("equal", adjustable="datalim")
         ax.grid(True, alpha=0.3)
     what = f"{len(ws):,} samples ({ws.method})"
     if step > 1:
         what += f", every {step}th drawn"
-    fig.suptitle(f"{ws.robot.name or 'Robot'}: end-effector workspace, {what}")
+    fig.suptitle(f"{ws.robot.name or 'Robot'}: end-effector workspace, {what}", **PLAIN)
     return fig

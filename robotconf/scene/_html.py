@@ -9,7 +9,7 @@ import json
 from ._commands import Op, pack_ops
 from ._widget import meshcat_source, script
 
-__all__ = ["scene_html"]
+__all__ = ["scene_html", "script_safe"]
 
 _PAGE = """<!DOCTYPE html>
 <html lang="en">
@@ -51,7 +51,8 @@ def scene_html(ops: list[Op], title: str = "robot") -> str:
     ops : list of Op
         A scene log (:meth:`SceneLog.ops`).
     title : str
-        Page title.
+        Page title (HTML-escaped; label texts travel as JSON and are drawn on a canvas,
+        never parsed as HTML).
 
     Returns
     -------
@@ -61,10 +62,24 @@ def scene_html(ops: list[Op], title: str = "robot") -> str:
     log = json.dumps(
         {"ops": contents, "buffers": [base64.b64encode(b).decode("ascii") for b in buffers]}
     )
-    # Inside <script> only "</" can end the element early; escape it in both payloads.
     return _PAGE.format(
         title=html.escape(title),
-        log=log.replace("</", "<\\/"),
+        log=script_safe(log),
         glue=script("glue"),
-        source=json.dumps(meshcat_source()).replace("</", "<\\/"),
+        source=script_safe(json.dumps(meshcat_source())),
     )
+
+
+def script_safe(text: str) -> str:
+    """JSON text that cannot end or re-open the ``<script>`` element it is written in.
+
+    Label texts carry user names such as ``</script><img onerror=…>``; ``"</"`` would end
+    the element and ``"<!--"`` changes how the browser finds its end. Writing every
+    ``<`` as the JSON escape ``\\u003c`` (and ``>``, ``&`` alike) leaves no markup at all,
+    and ``JSON.parse`` (or the JavaScript string literal) gives back the same text.
+
+    >>> safe = script_safe(json.dumps("</script><!--"))
+    >>> "<" in safe, json.loads(safe)
+    (False, '</script><!--')
+    """
+    return text.replace("<", "\\u003c").replace(">", "\\u003e").replace("&", "\\u0026")

@@ -197,7 +197,8 @@ class Scene:
         """
         drawing = self._require_drawing()
         command = animation_command(drawing, motion, speed=speed, play=play, root=ROBOT)
-        names = [text.split(" (")[0] for text in drawing.labels(self.q)]
+        # The names themselves: cutting "M2 (…)" at " (" would also cut a name holding it.
+        names = list(drawing.point_names)
         self._shown_labels = names
         self._send(
             [labels_op([self._path(p) for p in drawing.label_paths], names), command_op(command)]

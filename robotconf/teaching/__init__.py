@@ -35,6 +35,7 @@ from ._symbolic import (
     sine_entries,
 )
 from ._symbolic_chain import SymbolicChain, simplify_matrix, symbolic_chain
+from ._symbolic_limits import symbolic_fits
 
 __all__ = [
     # derivations
@@ -55,6 +56,7 @@ __all__ = [
     "simplify_matrix",
     "exact_number",
     "sine_entries",
+    "symbolic_fits",
     # expected answers and the checker
     "expected_matrix",
     "ExpectedMatrix",
