@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import html
+
 import robotconf as rc
 
 from .test_panel_support import make_panel
@@ -13,7 +15,8 @@ def test_numeric_printout_is_the_core_derivation():
     assert "       [ 70 ]\np_EE = [  0 ]\n       [ 20 ]" in panel.matrices.text
     assert "<pre>" in panel.matrices.numeric_text.value
     panel.matrices.style.value = "latex"
-    assert panel.matrices.numeric_math.value == "$$" + rc.derivation(panel.robot).latex() + "$$"
+    latex = rc.derivation(panel.robot).latex()  # shown HTML-escaped: "&" as "&amp;"
+    assert panel.matrices.numeric_math.value == "$$" + html.escape(latex, quote=False) + "$$"
     assert panel.matrices.numeric_text.layout.display == "none"
 
 
@@ -30,7 +33,7 @@ def test_symbolic_view_waits_for_its_tab_and_ignores_q():
     assert view.symbolic_math.value == ""  # tab not showing: nothing computed
     panel.results.selected_index = 1
     expected = rc.derivation(panel.robot, symbolic=True).latex()
-    assert view.symbolic_math.value == "$$" + expected + "$$"
+    assert view.symbolic_math.value == "$$" + html.escape(expected, quote=False) + "$$"
     cached = dict(view._symbolic_cache)
     panel.modules.rows[1].q.box.value = 30.0  # q does not change the symbolic matrices
     assert view._symbolic_cache.keys() == cached.keys()

@@ -19,6 +19,7 @@ from .._errors import InvalidInputError
 from ..kinematics import DHLink, Robot
 from ..motion import Motion
 from ..presets import preset, preset_names
+from ._callbacks import observe
 from ._dh_table import DHTable
 from ._errors_display import ErrorLabel, collect_errors
 from ._files_section import FilesSection
@@ -102,6 +103,8 @@ class Configurator:
         if not isinstance(robot, Robot):
             raise InvalidInputError("robot", robot, "a robotconf Robot or None")
         self._robot = robot
+        # The last robot each editor described, for a mode switch onto a pending bad value.
+        self._last_valid: dict[str, Robot] = {}
         self._loading = False
         self.title = widgets.HTML("<h3 style='margin:4px 0'>robotconf configurator</h3>")
         names = preset_names()
@@ -114,12 +117,14 @@ class Configurator:
         )
         self.preset_error = ErrorLabel()
         self.mode = widgets.ToggleButtons(options=_MODES, value="modules")
+        self.mode_error = ErrorLabel()
         self.angle_unit = widgets.ToggleButtons(
             options=(("deg", True), ("rad", False)),
             value=degrees,
             tooltips=["angles in degrees", "angles in radians"],
             style={"button_width": "48px"},
         )
+        self.angle_unit_error = ErrorLabel()
         self.modules = ModuleList(self._edited)
         self.dh = DHTable(self._edited)
         self.wizard = Wizard(self._wizard_finished, degrees, length_scale(robot))
@@ -147,7 +152,14 @@ class Configurator:
             [
                 self.title,
                 widgets.HBox(
-                    [self.preset, self.preset_error.widget, self.mode, self.angle_unit],
+                    [
+                        self.preset,
+                        self.preset_error.widget,
+                        self.mode,
+                        self.mode_error.widget,
+                        self.angle_unit,
+                        self.angle_unit_error.widget,
+                    ],
                     layout=widgets.Layout(flex_flow="row wrap", align_items="center"),
                 ),
                 widgets.HBox(
@@ -165,10 +177,11 @@ class Configurator:
                 ),
             ]
         )
-        self.preset.observe(self._preset_chosen, "value")
-        self.mode.observe(lambda _: self._mode_changed(), "value")
-        self.angle_unit.observe(lambda change: self._set_degrees(change["new"]), "value")
-        self.results.observe(self._tab_changed, "selected_index")
+        observe(self.preset, self.preset_error, self._preset_chosen)
+        observe(self.mode, self.mode_error, lambda _: self._mode_changed())
+        observe(self.angle_unit, self.angle_unit_error, lambda c: self._set_degrees(c["new"]))
+        # Showing the Matrices tab computes the symbolic view: its failures show there.
+        observe(self.results, self.matrices.error, self._tab_changed, "selected_index")
         self.matrices.set_visible(False)
         self._load_robot(robot, first=True)
 
@@ -247,6 +260,7 @@ class Configurator:
             self._show_editor()
         finally:
             self._loading = False
+        self._last_valid = {"modules": robot, **({"dh": robot} if all_dh else {})}
         self._accept(robot, rebuild=not first, first=first)
 
     def _show_editor(self) -> None:
@@ -261,15 +275,20 @@ class Configurator:
     # -- editing ------------------------------------------------------------------------
 
     def _edited(self, reason: str, order: Sequence[int | None] | None) -> None:
+        self._rebuild(reason, order)
+
+    def _rebuild(self, reason: str, order: Sequence[int | None] | None) -> Robot | None:
+        """Build and accept the robot the editor shows; ``None`` if the core refuses it."""
         if self._loading:
-            return
-        editor = self.dh if self.mode.value == "dh" else self.modules
+            return None
+        mode = "dh" if self.mode.value == "dh" else "modules"
+        editor = self.dh if mode == "dh" else self.modules
         links = editor.links()
         if reason == "structure" and links is not None:
             self.extras.set_count(len(links))
         extras = self.extras.values()
         if links is None or extras is None:
-            return
+            return None
         active, point = extras
         try:
             robot = Robot(
@@ -282,15 +301,20 @@ class Configurator:
         except InvalidInputError as error:
             label = {"active": self.extras.active_error}.get(error.field, editor.error)
             label.show(str(error))
-            return
+            return None
         self.extras.active_error.clear()
+        self._leave_preset(robot)
+        self._last_valid[mode] = robot
+        self._accept(robot, order=order if reason == "structure" else None)
+        return robot
+
+    def _leave_preset(self, robot: Robot) -> None:
         if self.preset.value and robot != self._robot:
             self._loading = True  # the robot was edited: it is no longer the preset
             try:
                 self.preset.value = ""
             finally:
                 self._loading = False
-        self._accept(robot, order=order if reason == "structure" else None)
 
     def _accept(
         self,
@@ -339,7 +363,15 @@ class Configurator:
             return
         if self.mode.value == "dh" and not self.dh.rows:
             self.dh.load([DHLink(a=length_scale(self._robot) / 10.0)], length_scale(self._robot))
-        self._edited("structure", None)
+        if self._rebuild("structure", None) is not None:
+            return
+        # The editor holds a value the core refuses (a NaN being typed, say): the panel
+        # shows the last robot this editor described, not the other mode's robot.
+        last = self._last_valid.get(self.mode.value)
+        if last is not None and last != self._robot:
+            self.extras.set_count(last.n)
+            self._leave_preset(last)
+            self._accept(last, rebuild=True)
 
     def _set_degrees(self, degrees: bool) -> None:
         for editor in (self.modules, self.dh, self.wizard):
@@ -359,6 +391,9 @@ class Configurator:
 
     def _error_items(self) -> Iterator[tuple[str, ErrorLabel]]:
         yield "preset", self.preset_error
+        yield "mode", self.mode_error
+        yield "angle_unit", self.angle_unit_error
+        yield from self.matrices.error_items()
         yield from self.modules.error_items()
         yield from self.dh.error_items()
         yield from self.extras.error_items()

@@ -3,6 +3,8 @@
 from __future__ import annotations
 
 import dataclasses
+import functools
+import html
 from collections.abc import Callable, Iterator, Sequence
 from typing import Any
 
@@ -22,6 +24,7 @@ from ..kinematics import (
     DHLink,
     dh_formula,
 )
+from ._callbacks import observe, on_click
 from ._errors_display import ErrorLabel
 from ._number_control import NumberControl
 from ._ranges import q_display, q_range
@@ -92,7 +95,7 @@ class DHRow:
             tooltip="R: q adds to θ (revolute); P: q adds to d (prismatic)",
             layout=widgets.Layout(width="52px"),
         )
-        self.joint.observe(self._joint_changed, "value")
+        observe(self.joint, self.error, self._joint_changed)
         lo, hi = q_range(link.unit, scale, limits, degrees)
         angle, label = q_display(link.unit)
         self.q = NumberControl(
@@ -109,7 +112,7 @@ class DHRow:
         buttons = []
         for icon, action in (("arrow-up", "up"), ("arrow-down", "down"), ("trash", "remove")):
             button = widgets.Button(icon=icon, layout=widgets.Layout(width="32px"))
-            button.on_click(lambda _, action=action: on_action(self, action))
+            on_click(button, self.error, functools.partial(on_action, self, action))
             buttons.append(button)
         self.up_button, self.down_button, self.remove_button = buttons
         cells = [c.widget for c in self.cells.values()]
@@ -198,10 +201,13 @@ class DHTable(RowList):
             style={"button_width": "90px"},
         )
         self.convention_note = widgets.HTML()
-        self.convention.observe(self._convention_changed, "value")
+        self.convention_error = ErrorLabel()
+        self._convention_handler = observe(
+            self.convention, self.convention_error, self._convention_changed
+        )
         self.widget = widgets.VBox(
             [
-                self.convention,
+                widgets.HBox([self.convention, self.convention_error.widget]),
                 self.convention_note,
                 self._rows_box,
                 widgets.HBox([self.add_button, self.error.widget]),
@@ -211,7 +217,7 @@ class DHTable(RowList):
 
     def _show_note(self) -> None:
         tip = _CONVENTION_TIPS[self.convention.value]
-        self.convention_note.value = f"<small>{tip}</small>"
+        self.convention_note.value = f"<small>{html.escape(tip)}</small>"
 
     def _row(self, link: DHLink, limits: Any = None) -> DHRow:
         return DHRow(link, self._scale, self.degrees, limits, self._row_changed, self._action)
@@ -228,9 +234,8 @@ class DHTable(RowList):
         ``limits`` is an (n, 2) array of joint limits in core units, or ``None``.
         """
         if links:
-            self.convention.unobserve(self._convention_changed, "value")
-            self.convention.value = links[0].convention
-            self.convention.observe(self._convention_changed, "value")
+            with self._convention_handler.paused():
+                self.convention.value = links[0].convention
             self._show_note()
         self._load_rows(links, scale, degrees, limits)
 
@@ -248,6 +253,7 @@ class DHTable(RowList):
     def error_items(self) -> Iterator[tuple[str, ErrorLabel]]:
         """``(key, label)`` pairs: ``dh`` and ``dh[i].<field>``."""
         yield "dh", self.error
+        yield "dh.convention", self.convention_error
         for i, row in enumerate(self.rows):
             yield f"dh[{i}]", row.error
             for field, control in row.controls():

@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import html
+from collections.abc import Callable, Iterator
 from typing import Any
 
 import ipywidgets as widgets
 
+from .._errors import InvalidInputError
+from ._callbacks import observe, on_click
 from ._errors_display import ErrorLabel
 from ._images import download_link
 
@@ -50,16 +53,16 @@ class FilesSection:
                 widgets.HBox([self.upload, self.load_status, self.load_error.widget]),
             ]
         )
-        self.save_button.on_click(lambda _: self.make_save_link())
-        self.upload.observe(self._uploaded, "value")
+        on_click(self.save_button, self.save_error, self.make_save_link)
+        observe(self.upload, self.load_error, self._uploaded)
 
     def make_save_link(self) -> str:
         """Build the download link of the current state; returns its HTML (``""`` on error)."""
         self.save_error.clear()
+        self.save_link.value = ""  # never a link to an older state, whatever fails below
         try:
             text = self._save_text()
-        except ValueError as error:
-            self.save_link.value = ""
+        except InvalidInputError as error:
             self.save_error.show(str(error))
             return ""
         name = self.filename.value.strip() or "robot.json"
@@ -72,15 +75,16 @@ class FilesSection:
             return
         upload = files[0]
         self.load_error.clear()
+        self.load_status.value = ""
         try:
             self._load_bytes(bytes(upload["content"]))
-        except ValueError as error:
-            self.load_status.value = ""
+        except InvalidInputError as error:
             self.load_error.show(str(error))
         else:
-            self.load_status.value = f"<small>loaded {upload['name']}</small>"
+            # The file name is the user's: text, never markup.
+            self.load_status.value = f"<small>loaded {html.escape(str(upload['name']))}</small>"
 
-    def error_items(self) -> Any:
+    def error_items(self) -> Iterator[tuple[str, ErrorLabel]]:
         """``(key, label)``: ``save`` and ``load``."""
         yield "save", self.save_error
         yield "load", self.load_error

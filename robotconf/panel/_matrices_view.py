@@ -1,12 +1,19 @@
 """The matrices tab: A_i, M_i and p_EE step by step, numerically and (on request) symbolically.
 
 Everything shown is :func:`robotconf.derivation`'s own text or LaTeX, so a student gets the
-same printout with ``print(rc.derivation(panel.robot))`` in a cell.
+same printout with ``print(rc.derivation(panel.robot))`` in a cell. The printout holds the
+robot's name, so it is HTML-escaped like any user text (the core's LaTeX already escapes
+``$`` and backslashes in names, so a name never becomes math either).
+
+The symbolic matrices grow exponentially with the chain: for a robot the core's
+:func:`~robotconf.teaching.symbolic_fits` refuses, the box is disabled and a note says why,
+instead of the kernel hanging for minutes.
 """
 
 from __future__ import annotations
 
 import html
+from collections.abc import Iterator
 from typing import Any
 
 import ipywidgets as widgets
@@ -14,7 +21,9 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from ..kinematics import Robot
-from ..teaching import Derivation, derivation, format_number
+from ..teaching import Derivation, derivation, format_number, symbolic_fits
+from ._callbacks import observe
+from ._errors_display import ErrorLabel
 
 __all__ = ["MatricesView", "end_effector_text"]
 
@@ -29,6 +38,24 @@ def end_effector_text(robot: Robot, precision: int = 4) -> str:
     """
     values = ", ".join(format_number(v, precision) for v in robot.end_effector())
     return f"p_EE = ({values})"
+
+
+def math_html(latex: str) -> str:
+    """Display-math HTML of LaTeX source, escaped so that no tag in it reaches the page.
+
+    >>> math_html("M_1 &= <b>")
+    '$$M_1 &amp;= &lt;b&gt;$$'
+    """
+    return "$$" + html.escape(latex, quote=False) + "$$"
+
+
+#: Shown instead of the symbolic box's effect for a chain too long to derive quickly.
+TOO_LONG_NOTE = (
+    "<small>Symbolic matrices are offered for shorter chains only: their size doubles with "
+    "every rotation, and this chain would keep the kernel busy for a long time. "
+    "<code>rc.derivation(panel.robot, symbolic=True)</code> in a cell still builds them "
+    "(it may take minutes).</small>"
+)
 
 
 class MatricesView:
@@ -58,28 +85,34 @@ class MatricesView:
         self.lengths = widgets.Checkbox(
             value=False, description="lengths as l1, l2, …", indent=False
         )
-        self.numeric_text = widgets.HTML()
-        self.numeric_math = widgets.HTMLMath(layout=widgets.Layout(display="none"))
-        self.symbolic_math = widgets.HTMLMath()
-        self.symbolic_error = widgets.HTML()
+        # Items of a scrolling column keep their height: a long printout must scroll, not
+        # shrink the rows above it until the printout covers them.
+        self.numeric_text = widgets.HTML(layout=widgets.Layout(flex="0 0 auto"))
+        self.numeric_math = widgets.HTMLMath(layout=widgets.Layout(display="none", flex="0 0 auto"))
+        self.symbolic_math = widgets.HTMLMath(layout=widgets.Layout(flex="0 0 auto"))
+        self.symbolic_note = widgets.HTML()
+        self.error = ErrorLabel()
         self.widget = widgets.VBox(
             [
-                widgets.HBox([self.style, self.symbolic, self.lengths]),
-                self.numeric_text,
-                self.numeric_math,
-                self.symbolic_error,
-                self.symbolic_math,
-            ],
-            layout=widgets.Layout(overflow="auto", max_height="640px"),
+                widgets.HBox(
+                    [self.style, self.symbolic, self.lengths, self.error.widget],
+                    layout=widgets.Layout(flex="0 0 auto", flex_flow="row wrap"),
+                ),
+                self.symbolic_note,
+                widgets.VBox(
+                    [self.numeric_text, self.numeric_math, self.symbolic_math],
+                    layout=widgets.Layout(overflow="auto", max_height="640px"),
+                ),
+            ]
         )
         self.visible = True
         self.derivation: Derivation | None = None
         self._robot: Robot | None = None
         self._symbolic_cache: dict[Any, Derivation] = {}
         self._symbolic_shown: Any = None
-        self.style.observe(lambda _: self._render_numeric(), "value")
-        self.symbolic.observe(lambda _: self._render_symbolic(), "value")
-        self.lengths.observe(lambda _: self._render_symbolic(), "value")
+        observe(self.style, self.error, lambda _: self._render_numeric())
+        observe(self.symbolic, self.error, lambda _: self._render_symbolic())
+        observe(self.lengths, self.error, lambda _: self._render_symbolic())
 
     @property
     def text(self) -> str:
@@ -89,9 +122,16 @@ class MatricesView:
     def show(self, robot: Robot) -> None:
         """Show the derivation of ``robot`` at its own q."""
         self._robot = robot
+        fits = symbolic_fits(robot)
+        self.symbolic.disabled = self.lengths.disabled = not fits
+        self.symbolic_note.value = "" if fits else TOO_LONG_NOTE
         self.derivation = derivation(robot, precision=self.precision)
         self._render_numeric()
         self._render_symbolic()
+
+    def error_items(self) -> Iterator[tuple[str, ErrorLabel]]:
+        """``(key, label)``: ``matrices``."""
+        yield "matrices", self.error
 
     def set_visible(self, visible: bool) -> None:
         """Tell the view whether its tab is showing (the symbolic view waits until it is)."""
@@ -103,30 +143,32 @@ class MatricesView:
             return
         latex = self.style.value == "latex"
         if latex:
-            self.numeric_math.value = "$$" + self.derivation.latex() + "$$"
+            self.numeric_math.value = math_html(self.derivation.latex())
         else:
             self.numeric_text.value = f"<pre>{html.escape(str(self.derivation))}</pre>"
         self.numeric_text.layout.display = "none" if latex else None
         self.numeric_math.layout.display = None if latex else "none"
 
     def _render_symbolic(self) -> None:
-        wanted = self.symbolic.value and self._robot is not None
+        robot = self._robot
+        wanted = self.symbolic.value and robot is not None and symbolic_fits(robot)
         self.symbolic_math.layout.display = None if wanted else "none"
         if not wanted or not self.visible:
             return
-        robot = self._robot
         assert robot is not None
         key = (robot.with_q(np.zeros(robot.n)), bool(self.lengths.value))
         if key == self._symbolic_shown:
             return
         steps = self._symbolic_cache.get(key)
         if steps is None:
+            # Never another structure's matrices, even if this derivation fails.
+            self.symbolic_math.value, self._symbolic_shown = "", None
             try:
                 steps = derivation(robot, symbolic=True, lengths=bool(self.lengths.value))
             except InvalidInputError as error:
-                self.symbolic_error.value = f'<span style="color:#b00020">{error}</span>'
+                self.error.show(str(error))
                 return
             self._symbolic_cache = {key: steps}  # one structure at a time: bounded memory
-        self.symbolic_error.value = ""
-        self.symbolic_math.value = "$$" + steps.latex() + "$$"
+        self.error.clear()
+        self.symbolic_math.value = math_html(steps.latex())
         self._symbolic_shown = key

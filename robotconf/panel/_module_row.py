@@ -2,6 +2,8 @@
 
 from __future__ import annotations
 
+import functools
+import html
 from collections.abc import Callable, Iterator
 from typing import Any
 
@@ -18,6 +20,7 @@ from ..kinematics import (
     kind_joint_type,
     kind_label,
 )
+from ._callbacks import observe, on_click
 from ._errors_display import ErrorLabel
 from ._number_control import NumberControl
 from ._ranges import q_display, q_range
@@ -93,7 +96,7 @@ class ModuleRow:
             (self.down_button, "down"),
             (self.remove_button, "remove"),
         ):
-            button.on_click(lambda _, action=action: on_action(self, action))
+            on_click(button, self.error, functools.partial(on_action, self, action))
         self.kind = widgets.Dropdown(
             options=KIND_OPTIONS,
             value="none" if self._module is None else self._module.kind,
@@ -130,13 +133,14 @@ class ModuleRow:
         # Stable hooks for browser tests and for instructors' custom CSS.
         self.kind.add_class("robotconf-module-kind")
         self.q.slider.add_class("robotconf-module-q")
-        self.kind.observe(self._kind_changed, "value")
+        observe(self.kind, self.error, self._kind_changed)
         buttons = [self.up_button, self.down_button, self.remove_button]
         if self.is_module:
             head = [self.title, self.kind, *buttons, self.error.widget]
             controls = [*(c.widget for c in self.offsets), self.q.widget]
         else:
-            summary = widgets.HTML(f"<code>{link!r}</code>")
+            # The repr holds the link's name, which comes from a file: text, never markup.
+            summary = widgets.HTML(f"<code>{html.escape(repr(link))}</code>")
             head = [self.title, summary, *buttons, self.error.widget]
             controls = [self.q.widget]
         wrap = widgets.Layout(flex_flow="row wrap")

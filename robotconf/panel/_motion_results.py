@@ -2,11 +2,14 @@
 
 from __future__ import annotations
 
-from collections.abc import Callable
+import io
+from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, Any
 
 import ipywidgets as widgets
 
+from ._callbacks import observe, on_click
+from ._errors_display import ErrorLabel
 from ._images import download_link, figure_png
 
 if TYPE_CHECKING:
@@ -22,7 +25,8 @@ _ALL = "all points"
 
 
 def _html_table(frame: pd.DataFrame) -> str:
-    table = frame.to_html(float_format=lambda v: f"{v:.6g}", border=0)
+    # Column headers are point names, which come from files: pandas escapes them.
+    table = frame.to_html(float_format=lambda v: f"{v:.6g}", border=0, escape=True)
     return (
         '<div style="max-height:320px;overflow:auto;font-size:0.8em;'
         f'border:1px solid #ddd">{table}</div>'
@@ -49,6 +53,8 @@ class MotionResults:
         self.table_note = widgets.HTML()
         self.csv_button = widgets.Button(description="CSV download link", icon="download")
         self.csv_link = widgets.HTML()
+        self.csv_error = ErrorLabel()
+        self.error = ErrorLabel()
         self.stats = widgets.HTML()
         self.plot = widgets.Image(format="png", layout=widgets.Layout(max_width="900px"))
         self.animate_button = widgets.Button(
@@ -57,7 +63,11 @@ class MotionResults:
         self.tabs = widgets.Tab(
             children=[
                 widgets.VBox(
-                    [self.table_note, self.table, widgets.HBox([self.csv_button, self.csv_link])]
+                    [
+                        self.table_note,
+                        self.table,
+                        widgets.HBox([self.csv_button, self.csv_link, self.csv_error.widget]),
+                    ]
                 ),
                 self.stats,
                 self.plot,
@@ -65,15 +75,29 @@ class MotionResults:
             titles=("DVA table", "statistics", "plot"),
         )
         self.widget = widgets.VBox(
-            [widgets.HBox([self.point, self.displacement, self.animate_button]), self.tabs],
+            [
+                widgets.HBox(
+                    [self.point, self.displacement, self.animate_button, self.error.widget]
+                ),
+                self.tabs,
+            ],
             layout=widgets.Layout(display="none"),
         )
-        self.csv_button.on_click(lambda _: self.make_csv_link())
-        self.animate_button.on_click(lambda _: self.motion is not None and animate(self.motion))
-        self.point.observe(lambda _: self.render(), "value")
-        self.displacement.observe(lambda _: self._render_plot(), "value")
-        self.tabs.observe(lambda _: self._render_plot(), "selected_index")
+        on_click(self.csv_button, self.csv_error, self.make_csv_link)
+        on_click(self.animate_button, self.error, self._animate_motion)
+        self._point_handler = observe(self.point, self.error, lambda _: self.render())
+        observe(self.displacement, self.error, lambda _: self._render_plot())
+        observe(self.tabs, self.error, lambda _: self._render_plot(), "selected_index")
         self._plotted: Any = None
+
+    def _animate_motion(self) -> None:
+        if self.motion is not None:
+            self._animate(self.motion)
+
+    def error_items(self) -> Iterator[tuple[str, ErrorLabel]]:
+        """``(key, label)``: ``results`` and ``csv``."""
+        yield "results", self.error
+        yield "csv", self.csv_error
 
     def show(self, motion: Motion) -> None:
         """Show a new motion."""
@@ -81,12 +105,13 @@ class MotionResults:
         self.widget.layout.display = None
         self.animate_button.disabled = False
         self.csv_link.value = ""
+        self.csv_error.clear()
+        # Dropdown labels are rendered as text by ipywidgets, so point names stay raw here.
         points = [*reversed(motion.points), _ALL]  # EE first: what students look at
         keep = self.point.value if self.point.value in points else "EE"
-        self.point.unobserve_all("value")
-        self.point.options = points
-        self.point.value = keep
-        self.point.observe(lambda _: self.render(), "value")
+        with self._point_handler.paused():
+            self.point.options = points
+            self.point.value = keep
         self._plotted = None
         self.render()
 
@@ -130,9 +155,13 @@ class MotionResults:
 
     def make_csv_link(self) -> str:
         """Build the CSV of the whole table as a ``data:`` link; returns its HTML."""
+        self.csv_link.value = ""  # never a link to an older motion, whatever fails below
         if self.motion is None:
             return ""
-        text = self.motion.table.to_csv()
+        buffer = io.StringIO()
+        self.motion.to_csv(buffer)  # the core's export, with its memory check
+        text = buffer.getvalue()
+        # The robot's name is the user's; download_link escapes it in the attribute and text.
         name = f"{self.motion.robot.name or 'robot'}_motion.csv".replace(" ", "_")
         self.csv_link.value = download_link(
             text, name, "text/csv", f"{name} ({len(text) / 1e6:.2g} MB)"

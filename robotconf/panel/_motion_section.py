@@ -11,6 +11,7 @@ from .._errors import InvalidInputError
 from ..kinematics import Robot
 from ..motion import METHODS, Motion, SimulationSettings, simulate
 from ..signals import Signal
+from ._callbacks import on_click
 from ._errors_display import ErrorLabel
 from ._motion_results import MotionResults
 
@@ -99,7 +100,7 @@ class MotionSection:
                 self.results.widget,
             ]
         )
-        self.run_button.on_click(lambda _: self.run())
+        on_click(self.run_button, self.run_error, self.run)
 
     # -- editors ------------------------------------------------------------------------
 
@@ -119,8 +120,7 @@ class MotionSection:
             source = order[i] if i < len(order) else None
             if source is not None and source < len(old):
                 editor = old[source]
-                editor.name = f"q{i + 1}"
-                editor.label.value = f"<b>q{i + 1}</b> <small>({_unit(robot, i)})</small>"
+                editor.rename(f"q{i + 1}", _unit(robot, i))
             else:
                 editor = SignalEditor(f"q{i + 1}", _unit(robot, i))
             editors.append(editor)
@@ -175,6 +175,7 @@ class MotionSection:
         """``(key, label)``: ``t_end``, ``dt``, ``method``, ``run`` and ``signals.q…``."""
         yield from self.setting_errors.items()
         yield "run", self.run_error
+        yield from self.results.error_items()
         for editor in self.editors:
             yield from editor.error_items(f"signals.{editor.name}")
 
@@ -188,6 +189,7 @@ class MotionSection:
         if signals is None:
             self.status.value = "<small>fix the signal marked in red</small>"
             return None
+        self.status.value = ""
         robot = self._robot()
         try:
             settings = self.simulation_settings()

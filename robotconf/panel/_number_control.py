@@ -15,6 +15,7 @@ from typing import Any
 import ipywidgets as widgets
 import numpy as np
 
+from ._callbacks import observe, on_click
 from ._errors_display import ErrorLabel
 
 __all__ = ["NumberControl"]
@@ -103,9 +104,10 @@ class NumberControl:
             parts += [self.box]
         parts += [self.unit_label, self.error.widget]
         self.widget = widgets.HBox(parts, layout=widgets.Layout(align_items="center"))
-        self.slider.observe(self._slider_changed, "value")
-        self.box.observe(self._box_changed, "value")
-        self.widen_button.on_click(lambda _: self.widen())
+        # A failure anywhere downstream (the robot, the scene) shows beside this control.
+        observe(self.slider, self.error, self._slider_changed)
+        observe(self.box, self.error, self._box_changed)
+        on_click(self.widen_button, self.error, self.widen)
 
     # -- units --------------------------------------------------------------------------
 

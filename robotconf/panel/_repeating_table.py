@@ -9,6 +9,7 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from ..signals import RepeatingSequence
+from ._callbacks import observe, on_click
 from ._errors_display import ErrorLabel
 from ._images import figure_png
 
@@ -46,8 +47,8 @@ class RepeatingTable:
         self.remove_button = widgets.Button(
             description="row", icon="minus", tooltip="remove the last row"
         )
-        self.add_button.on_click(lambda _: self._add_row())
-        self.remove_button.on_click(lambda _: self._remove_row())
+        on_click(self.add_button, self.error, self._add_row)
+        on_click(self.remove_button, self.error, self._remove_row)
         self.preview = widgets.Image(format="png", layout=widgets.Layout(width="320px"))
         self._grid = widgets.GridBox(
             layout=widgets.Layout(grid_template_columns="80px 80px", grid_gap="2px 4px")
@@ -76,7 +77,7 @@ class RepeatingTable:
 
     def _box(self, value: float) -> widgets.FloatText:
         box = widgets.FloatText(value=float(value), layout=widgets.Layout(width="78px"))
-        box.observe(lambda _: self._changed(), "value")
+        observe(box, self.error, lambda _: self._changed())
         return box
 
     def _layout(self) -> None:

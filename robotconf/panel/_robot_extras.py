@@ -9,6 +9,7 @@ import ipywidgets as widgets
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number
+from ._callbacks import observe
 from ._errors_display import ErrorLabel
 from ._number_control import NumberControl
 
@@ -43,7 +44,7 @@ class RobotExtras:
             NumberControl(name, 0.0, -1.0, 1.0, on_change=lambda _: self._changed())
             for name in ("Px", "Py", "Pz")
         )
-        self.active.observe(lambda _: self._changed(), "value")
+        observe(self.active, self.active_error, lambda _: self._changed())
         self.widget = widgets.VBox(
             [
                 widgets.HBox([self.active, self.active_error.widget]),

@@ -12,6 +12,7 @@ from typing import Any
 
 import ipywidgets as widgets
 
+from ._callbacks import on_click
 from ._errors_display import ErrorLabel
 
 __all__ = ["RowList", "ChangeCallback"]
@@ -38,8 +39,8 @@ class RowList:
         self._scale = 1.0
         self.degrees = True
         self.add_button = add_button
-        self.add_button.on_click(lambda _: self.add())
         self.error = ErrorLabel()
+        on_click(self.add_button, self.error, self.add)
         self._rows_box = widgets.VBox()
 
     def _row(self, link: Any, limits: Any = None) -> Any:  # pragma: no cover - abstract

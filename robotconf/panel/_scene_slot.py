@@ -7,6 +7,7 @@ inject a recording fake and the panel never depends on how the scene draws.
 
 from __future__ import annotations
 
+import html
 from collections.abc import Callable
 from typing import Any, Protocol
 
@@ -38,8 +39,8 @@ class PlaceholderScene:
         self.robot = robot
         self.q = robot.q
         self.widget = widgets.HTML(
-            f"<i>The 3D scene is not available here ({reason}); every other part of the "
-            "panel works.</i>"
+            f"<i>The 3D scene is not available here ({html.escape(reason)}); every other "
+            "part of the panel works.</i>"
         )
 
     def set_robot(self, robot: Any, q: Any = None) -> None:

@@ -7,6 +7,7 @@ so the panel shows exactly what ``rc.signals.Sine(...)`` accepts.
 from __future__ import annotations
 
 import dataclasses
+import html
 from collections.abc import Callable, Iterator
 
 import ipywidgets as widgets
@@ -14,6 +15,7 @@ import ipywidgets as widgets
 from .._errors import InvalidInputError
 from ..signals import SIGNAL_TYPES as CORE_SIGNAL_TYPES
 from ..signals import RepeatingSequence, Signal
+from ._callbacks import observe
 from ._errors_display import ErrorLabel
 from ._repeating_table import RepeatingTable
 
@@ -68,15 +70,14 @@ class SignalEditor:
     """
 
     def __init__(self, name: str, unit: str, on_change: Callable[[], None] | None = None):
-        self.name = name
         self._on_change = on_change
         self._custom: Signal | None = None
         options = [(f"— hold {name} —", _HOLD), *((k, k) for k in SIGNAL_TYPES)]
         self.kind = widgets.Dropdown(
             options=options, value=_HOLD, layout=widgets.Layout(width="170px")
         )
-        self.label = widgets.HTML(f"<b>{name}</b> <small>({unit})</small>")
-        self.label.layout.width = "90px"
+        self.label = widgets.HTML(layout=widgets.Layout(width="90px"))
+        self.rename(name, unit)
         self.parameters: dict[str, widgets.FloatText] = {}
         self.parameter_errors: dict[str, ErrorLabel] = {}
         self.error = ErrorLabel()
@@ -86,7 +87,12 @@ class SignalEditor:
             [widgets.HBox([self.label, self.kind, self.error.widget]), self._body],
             layout=widgets.Layout(border_bottom="1px solid #eee", padding="2px 0"),
         )
-        self.kind.observe(lambda _: self._kind_changed(), "value")
+        self._kind_handler = observe(self.kind, self.error, lambda _: self._kind_changed())
+
+    def rename(self, name: str, unit: str) -> None:
+        """Drive coordinate ``name`` (its unit ``unit``): the heading says so."""
+        self.name = name
+        self.label.value = f"<b>{html.escape(name)}</b> <small>({html.escape(unit)})</small>"
 
     @property
     def table(self) -> RepeatingTable:
@@ -106,7 +112,8 @@ class SignalEditor:
         self.parameters, self.parameter_errors = {}, {}
         self.error.clear()
         if kind == _CUSTOM:
-            self._body.children = (widgets.HTML(f"<code>{self._custom!r}</code> (from a file)"),)
+            shown = html.escape(repr(self._custom))
+            self._body.children = (widgets.HTML(f"<code>{shown}</code> (from a file)"),)
             return
         if kind == RepeatingSequence.__name__:
             self._body.children = (self.table.widget,)
@@ -124,9 +131,9 @@ class SignalEditor:
                 style={"description_width": "initial"},
                 layout=widgets.Layout(width="170px"),
             )
-            box.observe(lambda _: self._changed(), "value")
             self.parameters[name] = box
             self.parameter_errors[name] = ErrorLabel()
+            observe(box, self.parameter_errors[name], lambda _: self._changed())
             boxes.append(widgets.HBox([box, self.parameter_errors[name].widget]))
         self._body.children = tuple(boxes)
 
@@ -154,8 +161,7 @@ class SignalEditor:
 
     def load(self, signal: Signal | None) -> None:
         """Show ``signal`` (``None``: hold); other signals (sums, scaled) show read-only."""
-        self.kind.unobserve_all("value")
-        try:
+        with self._kind_handler.paused():
             if signal is None:
                 self.kind.value = _HOLD
                 self._make_body()
@@ -172,8 +178,6 @@ class SignalEditor:
                 self.kind.options = [*options, (f"custom: {signal!r}"[:40], _CUSTOM)]
                 self.kind.value = _CUSTOM
                 self._make_body()
-        finally:
-            self.kind.observe(lambda _: self._kind_changed(), "value")
 
     def error_items(self, prefix: str) -> Iterator[tuple[str, ErrorLabel]]:
         """``(key, label)``: ``signals.q1``, ``signals.q1.<parameter>``, ``signals.q1.table``."""

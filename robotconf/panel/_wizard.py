@@ -8,6 +8,7 @@ the robot to the list editor, so both modes end in the same robot.
 
 from __future__ import annotations
 
+import html
 from collections.abc import Callable, Iterator
 from typing import Any
 
@@ -25,8 +26,9 @@ from ..kinematics import (
     kind_axis,
     kind_joint_type,
 )
+from ._callbacks import observe, on_click
 from ._errors_display import ErrorLabel
-from ._matrices_view import end_effector_text
+from ._matrices_view import end_effector_text, math_html
 from ._module_row import KIND_OPTIONS
 from ._number_control import NumberControl
 from ._ranges import q_display
@@ -61,7 +63,7 @@ _MAX_MODULES = 12
 
 
 def _formula(kind: str, index: int, a: Any = None) -> str:
-    """LaTeX of ``A_i`` from the core's symbolic table, with symbols or the typed offsets."""
+    """``A_i`` from the core's symbolic table as display math, with symbols or the offsets."""
     import sympy
 
     from ..teaching import exact_number, module_matrix
@@ -71,7 +73,7 @@ def _formula(kind: str, index: int, a: Any = None) -> str:
         offsets = sympy.symbols([f"a_{axis}" for axis in AXIS_NAMES], real=True)
     else:
         offsets = tuple(exact_number(v) for v in a)
-    return f"$$A_{{{index}}} = {sympy.latex(module_matrix(kind, q, offsets))}$$"
+    return math_html(f"A_{{{index}}} = {sympy.latex(module_matrix(kind, q, offsets))}")
 
 
 class _ModuleAnswers:
@@ -139,8 +141,8 @@ class Wizard:
         self.error = ErrorLabel()
         self.back_button = widgets.Button(description="Back", icon="arrow-left")
         self.next_button = widgets.Button(description="Next", icon="arrow-right")
-        self.back_button.on_click(lambda _: self.back())
-        self.next_button.on_click(lambda _: self.next())
+        on_click(self.back_button, self.error, self.back)
+        on_click(self.next_button, self.error, self.next)
         self.robot: Robot | None = None
         self.widget = widgets.VBox(
             [
@@ -169,7 +171,7 @@ class Wizard:
     def _fit_answers(self) -> None:
         while len(self.answers) < self.count.value:
             answers = _ModuleAnswers(self.degrees, self._scale)
-            answers.kind.observe(lambda _: self._show(), "value")
+            observe(answers.kind, self.error, lambda _: self._show())
             self.answers.append(answers)
         del self.answers[self.count.value :]
 
@@ -211,12 +213,13 @@ class Wizard:
             self._say(text, [c.widget for c in self.end_effector])
             return
         robot = self._build()
-        summary = "" if robot is None else f"<pre>{robot}\n\n{end_effector_text(robot)}</pre>"
+        text = "" if robot is None else f"{robot}\n\n{end_effector_text(robot)}"
+        summary = f"<pre>{html.escape(text)}</pre>" if text else ""
         self._say("The robot you described (Finish loads it into the module list):", [])
         self.body.children = (widgets.HTML(summary),)
 
     def _say(self, text: str, controls: list[widgets.Widget]) -> None:
-        self.explanation.value = text
+        self.explanation.value = html.escape(text, quote=False)
         self.body.children = tuple(controls)
 
     def _show_formula(self, kind: str, index: int, a: Any) -> None:
