@@ -6,9 +6,11 @@ a CSV export, a report) estimates the bytes it will allocate and asks
 :class:`~robotconf.InvalidInputError` naming the field and the size, never a
 ``MemoryError`` half-way through.
 
-The budget defaults to half of the memory the operating system reports as available at
-the moment of the check. Set ``ROBOTCONF_MEMORY_BUDGET`` (bytes, or a number with a
-``K``/``M``/``G`` suffix, powers of 1024) or call :func:`set_memory_budget` to fix it.
+The budget defaults to half of the memory available at the moment of the check: the
+system's free memory, or less when a container (cgroup v2 ``memory.max``) or an
+address-space limit (``ulimit -v``) leaves less. Set ``ROBOTCONF_MEMORY_BUDGET`` (bytes,
+or a number with a ``K``/``M``/``G`` suffix, powers of 1024) or call
+:func:`set_memory_budget` to fix it.
 Estimates below :data:`ALWAYS_ALLOWED` bytes are never refused, so small everyday calls do
 not even read the system's memory figures.
 """
@@ -50,8 +52,7 @@ _SIZE_TEXT = re.compile(r"\s*(\d+(?:\.\d+)?)\s*([KMGT]?)(?:I?B)?\s*", re.IGNOREC
 _fixed_budget: int | None = None
 
 
-def _available_memory() -> int:
-    """Bytes the system can still give this process, or :data:`FALLBACK_AVAILABLE`."""
+def _system_available() -> int | None:
     try:
         with open("/proc/meminfo", encoding="ascii") as meminfo:
             for line in meminfo:
@@ -62,7 +63,49 @@ def _available_memory() -> int:
     try:
         return int(os.sysconf("SC_AVPHYS_PAGES")) * int(os.sysconf("SC_PAGE_SIZE"))
     except (AttributeError, ValueError, OSError):
-        return FALLBACK_AVAILABLE
+        return None
+
+
+def _read_int(path: str) -> int | None:
+    try:
+        with open(path, encoding="ascii") as file:
+            text = file.read().strip()
+    except OSError:
+        return None
+    return int(text) if text.isdigit() else None
+
+
+def _container_available() -> int | None:
+    """What a cgroup v2 memory limit (a container, a JupyterHub spawner) still allows."""
+    limit = _read_int("/sys/fs/cgroup/memory.max")  # "max" (no limit) reads as None
+    if limit is None:
+        return None
+    used = _read_int("/sys/fs/cgroup/memory.current") or 0
+    return max(limit - used, 0)
+
+
+def _address_space_available() -> int | None:
+    """What ``ulimit -v`` (``RLIMIT_AS``) leaves beyond what this process already maps."""
+    try:
+        import resource
+
+        soft, _ = resource.getrlimit(resource.RLIMIT_AS)
+        if soft == resource.RLIM_INFINITY:
+            return None
+        with open("/proc/self/statm", encoding="ascii") as statm:
+            mapped = int(statm.read().split()[0]) * resource.getpagesize()
+    except (ImportError, OSError, ValueError, IndexError):
+        return None
+    return max(soft - mapped, 0)
+
+
+def _available_memory() -> int:
+    """Bytes this process can still get: the tightest of the system's free memory, a
+    container's limit and an address-space limit, or :data:`FALLBACK_AVAILABLE`."""
+    # A kernel in a container sees the host's free memory; its own limit binds first.
+    limits = [_system_available(), _container_available(), _address_space_available()]
+    known = [limit for limit in limits if limit is not None]
+    return min(known) if known else FALLBACK_AVAILABLE
 
 
 def _parse_size(text: str) -> int:
