@@ -10,7 +10,10 @@ __all__ = ["InvalidInputError"]
 
 def _short_repr(value: Any, limit: int = 80) -> str:
     # One line, so a panel label, a CLI error and a log entry stay one line for arrays too.
-    text = re.sub(r"\s*\n\s*", " ", repr(value))
+    try:
+        text = re.sub(r"\s*\n\s*", " ", repr(value))
+    except ValueError:  # an integer too long for Python to print
+        text = f"<{type(value).__name__} too long to show>"
     return text if len(text) <= limit else text[: limit - 3] + "..."
 
 
