@@ -1,7 +1,14 @@
-"""Validators that turn user input into clean float arrays or raise InvalidInputError."""
+"""Validators that turn user input into clean float arrays or raise InvalidInputError.
+
+A *real number* here is a Python or numpy integer or float, or any object that converts
+to one (``Decimal``, ``Fraction``). Booleans, complex numbers (even with a zero imaginary
+part), dates and times, text and numpy text arrays are refused, never coerced: numpy would
+turn ``True`` into 1, ``1+0j`` into 1 and a date into days since 1970.
+"""
 
 from __future__ import annotations
 
+import datetime
 from collections.abc import Mapping, Sequence
 from typing import Any
 
@@ -10,6 +17,7 @@ import numpy as np
 from ._errors import InvalidInputError
 
 __all__ = [
+    "MAX_INTEGER_DIGITS",
     "Rejected",
     "as_float_array",
     "check_finite_number",
@@ -20,9 +28,29 @@ __all__ = [
     "check_configuration",
     "check_json_number",
     "check_json_object",
+    "one_line",
 ]
 
 _FINITE = "a finite real number"
+
+#: Integers with more decimal digits than this are refused (a 128-bit seed has 39).
+#: Python cannot even print integers of more than 4300 digits.
+MAX_INTEGER_DIGITS = 40
+
+_INTEGER_LIMIT = 10**MAX_INTEGER_DIGITS
+
+# What a value is when numpy would coerce it to a number although it is not a real one,
+# keyed by numpy dtype kind.
+_NOT_REAL_KINDS = {
+    "b": "a boolean is not a number",
+    "c": "a complex number is not a real number (even with a zero imaginary part)",
+    "M": "a date is not a number",
+    "m": "a time span is not a number",
+    "U": "text is not a number",
+    "S": "text is not a number",
+    "V": "a structured record is not a number",
+}
+_DATES = (datetime.date, datetime.time, datetime.timedelta)
 
 
 class Rejected:
@@ -39,18 +67,150 @@ class Rejected:
         return self.text
 
 
-def as_float_array(value: Any, field: str, allowed: str, what: str = "a number") -> np.ndarray:
-    """``np.asarray(value, dtype=float)``, refusing text and non-numeric objects clearly.
+class _Shown(str):
+    """Text that an error message shows as it is (its repr has no quotes)."""
 
+    __slots__ = ()
+
+    def __repr__(self) -> str:
+        return str(self)
+
+
+def one_line(value: Any) -> Any:
+    """``value`` as an error message may show it: arrays on a single line, huge ints described.
+
+    numpy prints a 2-D array over several lines and Python refuses to print integers of
+    more than 4300 digits, so neither may reach a message as it is.
+
+    >>> one_line(np.zeros((2, 3)))
+    array of shape (2, 3) and dtype float64
+    >>> one_line(np.arange(3.0)), one_line([1, 2])
+    (array([0., 1., 2.]), [1, 2])
+    >>> one_line(10**5000)
+    <an integer of about 5001 digits>
+    """
+    if isinstance(value, np.ndarray):
+        if value.ndim <= 1 and value.size <= 8:
+            try:
+                return _Shown(repr(value).replace("\n", " "))
+            except ValueError:  # an object array holding an integer too long to print
+                pass
+        return _Shown(f"array of shape {value.shape} and dtype {value.dtype}")
+    if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= _INTEGER_LIMIT:
+        return _Shown(f"<an integer of about {int(value.bit_length() * 0.30103) + 1} digits>")
+    try:
+        repr(value)
+    except ValueError:  # e.g. a list holding an integer too long to print
+        return _Shown(f"<a {type(value).__name__} too large to print>")
+    return value
+
+
+def _not_real(item: Any) -> str | None:
+    """Why ``item`` is not a real number (None when it may be one)."""
+    if isinstance(item, (bool, np.bool_)):
+        return _NOT_REAL_KINDS["b"]
+    if isinstance(item, (complex, np.complexfloating)):
+        return _NOT_REAL_KINDS["c"]
+    if isinstance(item, (str, bytes)):
+        return _NOT_REAL_KINDS["U"]
+    if isinstance(item, _DATES):
+        return "a date or time is not a number"
+    if isinstance(item, (np.generic, np.ndarray)):
+        if item.dtype.kind == "O" and isinstance(item, np.ndarray):
+            return _first_not_real(item.ravel().tolist())
+        return _NOT_REAL_KINDS.get(item.dtype.kind)
+    return None
+
+
+def _first_not_real(items: list[Any] | tuple[Any, ...]) -> str | None:
+    """Why the first offending entry of nested lists is not a real number, or None.
+
+    numpy hides a ``True`` among numbers (``[1, True]`` becomes ``[1, 1]``), so the
+    entries are looked at one by one; floats and ints, the common case, cost one type test.
+    """
+    stack = [items]
+    while stack:
+        for item in stack.pop():
+            kind = type(item)
+            if kind is float or kind is int:
+                continue
+            if kind is list or kind is tuple:
+                stack.append(item)
+                continue
+            reason = _not_real(item)
+            if reason is not None:
+                return reason
+    return None
+
+
+def _refuse_not_real(value: Any, field: str, allowed: str, what: str, nested: bool) -> None:
+    if isinstance(value, np.ndarray) and value.dtype.kind in "iuf":
+        return
+    reason = _first_not_real(value) if isinstance(value, (list, tuple)) else _not_real(value)
+    if reason is None:
+        return
+    if reason.startswith("text"):
+        # Text inside a list has always read "not numeric"; on its own it says what it is.
+        problem = "not numeric:" if nested else f"text is not {what}:"
+    else:
+        problem = f"{reason}:"
+    raise InvalidInputError(field, one_line(value), allowed, problem=problem)
+
+
+def as_float_array(value: Any, field: str, allowed: str, what: str = "a number") -> np.ndarray:
+    """``np.asarray(value, dtype=float)`` for real numbers only, refusing the rest clearly.
+
+    Parameters
+    ----------
+    value : real number or array-like of them
+        Booleans, complex numbers, dates and times, text, numpy text arrays and
+        non-numeric objects are refused; ``Decimal`` and ``Fraction`` are fine.
+    field : str
+        Name used in the error message.
+    allowed : str
+        What is allowed, for the message.
+    what : str
+        What a single value should be, for the message about text.
+
+    Returns
+    -------
+    ndarray
+        Float64; not copied when ``value`` already is a float64 array. Not checked for
+        NaN or infinity.
+
+    Raises
+    ------
+    InvalidInputError
+        For values that are not real numbers, or too large for a float.
+
+    Examples
+    --------
     >>> as_float_array([1, 2], "times", "numbers")
     array([1., 2.])
+    >>> as_float_array(np.array([1 + 0j]), "a", "3 numbers")
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: a: a complex number is not a real number (even with a zero ...
     """
     if isinstance(value, (str, bytes)):
         raise InvalidInputError(field, value, allowed, problem=f"text is not {what}:")
+    if not isinstance(value, np.ndarray) and hasattr(value, "__array__"):
+        # pandas, xarray and friends: look at their own dtype (a bool Series is no number).
+        try:
+            value = np.asarray(value)
+        except (TypeError, ValueError):
+            raise InvalidInputError(
+                field, one_line(value), allowed, problem="not numeric:"
+            ) from None
+    _refuse_not_real(value, field, allowed, what, nested=isinstance(value, (list, tuple)))
     try:
         array = np.asarray(value, dtype=float)
+    except OverflowError:
+        raise InvalidInputError(
+            field, one_line(value), allowed, problem="too large for a float (|x| < 1.8e308):"
+        ) from None
     except (TypeError, ValueError):
-        raise InvalidInputError(field, value, allowed, problem="not numeric:") from None
+        raise InvalidInputError(field, one_line(value), allowed, problem="not numeric:") from None
     return array
 
 
@@ -60,7 +220,7 @@ def check_finite_number(value: Any, field: str) -> float:
     Parameters
     ----------
     value : real number
-        A number; booleans and text are refused.
+        A number; booleans, complex numbers, dates, text and arrays are refused.
     field : str
         Name used in the error message.
 
@@ -82,12 +242,13 @@ def check_finite_number(value: Any, field: str) -> float:
     ...
     robotconf.InvalidInputError: ax: must be finite, got nan; allowed: a finite real number
     """
-    if isinstance(value, (bool, np.bool_)):
-        raise InvalidInputError(field, value, _FINITE, problem="a boolean is not a number:")
     array = as_float_array(value, field, _FINITE)
     if array.shape != ():
         raise InvalidInputError(
-            field, value, _FINITE, problem=f"expected one number, got shape {array.shape}:"
+            field,
+            one_line(value),
+            _FINITE,
+            problem=f"expected one number, got shape {array.shape}:",
         )
     number = float(array)
     if not np.isfinite(number):
@@ -103,7 +264,8 @@ def check_integer(
     Parameters
     ----------
     value : int
-        A Python or numpy integer; booleans, floats (even ``3.0``) and text are refused.
+        A Python or numpy integer of at most :data:`MAX_INTEGER_DIGITS` digits; booleans,
+        floats (even ``3.0``) and text are refused.
     field : str
         Name used in the error message.
     lo, hi : int, optional
@@ -139,8 +301,12 @@ def check_integer(
         else:
             what = "an integer"
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, (int, np.integer)):
-        raise InvalidInputError(field, value, what, problem="not an integer:")
+        raise InvalidInputError(field, one_line(value), what, problem="not an integer:")
     number = int(value)
+    if abs(number) >= _INTEGER_LIMIT:
+        raise InvalidInputError(
+            field, one_line(number), what, problem=f"more than {MAX_INTEGER_DIGITS} digits:"
+        )
     if (lo is not None and number < lo) or (hi is not None and number > hi):
         raise InvalidInputError(field, number, what, problem="out of range:")
     return number
@@ -159,7 +325,9 @@ def check_flag(value: Any, field: str) -> bool:
     robotconf.InvalidInputError: labels: not True or False: 'no'; allowed: True or False
     """
     if not isinstance(value, (bool, np.bool_)):
-        raise InvalidInputError(field, value, "True or False", problem="not True or False:")
+        raise InvalidInputError(
+            field, one_line(value), "True or False", problem="not True or False:"
+        )
     return bool(value)
 
 
@@ -197,7 +365,7 @@ def check_vector3(value: Any, field: str) -> tuple[float, float, float]:
     array = as_float_array(value, field, allowed)
     if array.shape != (3,):
         raise InvalidInputError(
-            field, value, allowed, problem=f"expected shape (3,), got {array.shape}:"
+            field, one_line(value), allowed, problem=f"expected shape (3,), got {array.shape}:"
         )
     if not np.all(np.isfinite(array)):
         bad = int(np.flatnonzero(~np.isfinite(array))[0])
@@ -251,7 +419,10 @@ def check_joint_values(
     array = as_float_array(q, field, allowed)
     if array.ndim not in (1, 2) or array.shape[-1] != n:
         raise InvalidInputError(
-            field, q, allowed, problem=f"expected shape ({n},) or (T, {n}), got {array.shape}:"
+            field,
+            one_line(q),
+            allowed,
+            problem=f"expected shape ({n},) or (T, {n}), got {array.shape}:",
         )
     finite = np.isfinite(array)
     if not finite.all():
@@ -304,7 +475,7 @@ def check_configuration(
     if batched:
         raise InvalidInputError(
             field,
-            q,
+            one_line(q),
             f"one configuration of shape ({n},)",
             problem=f"got a trajectory of shape {values.shape}:",
         )
@@ -323,7 +494,10 @@ def check_json_object(value: Any, path: str, keys: Mapping[str, bool]) -> Mappin
     allowed = ", ".join(f"{k}" if required else f"{k} (optional)" for k, required in keys.items())
     if not isinstance(value, Mapping):
         raise InvalidInputError(
-            path, value, f"an object with keys {allowed}", problem="expected an object, got"
+            path,
+            one_line(value),
+            f"an object with keys {allowed}",
+            problem="expected an object, got",
         )
     duplicates = getattr(value, "duplicates", ())
     if duplicates:
@@ -333,7 +507,10 @@ def check_json_object(value: Any, path: str, keys: Mapping[str, bool]) -> Mappin
     for key in value:
         if key not in keys:
             raise InvalidInputError(
-                f"{path}.{key}", value[key], f"the keys {allowed}", problem="unknown key, value"
+                f"{path}.{key}",
+                one_line(value[key]),
+                f"the keys {allowed}",
+                problem="unknown key, value",
             )
     for key, required in keys.items():
         if required and key not in value:
@@ -357,11 +534,11 @@ def check_json_number(value: Any, path: str) -> float:
     if isinstance(value, bool):
         raise InvalidInputError(path, value, allowed, problem="expected a number, got a boolean:")
     if not isinstance(value, (int, float)):
-        raise InvalidInputError(path, value, allowed, problem="expected a number, got")
+        raise InvalidInputError(path, one_line(value), allowed, problem="expected a number, got")
     try:
         result = float(value)
     except OverflowError:
-        raise InvalidInputError(path, value, allowed, problem="too large:") from None
+        raise InvalidInputError(path, one_line(value), allowed, problem="too large:") from None
     if not np.isfinite(result):
         raise InvalidInputError(path, result, allowed, problem="must be finite, got")
     return result

@@ -166,7 +166,7 @@ def test_xml_is_well_formed_with_unique_escaped_names(rng):
     robot = rc.Robot(
         [
             rc.Module("Rz", name="my arm"),
-            rc.Module("Ry", a=(0, 0, 1), name="my arm"),
+            rc.Module("Ry", a=(0, 0, 1), name="my_arm"),  # same URDF name once sanitized
             rc.Module("Tx", name="end_effector"),
             rc.Module("Rx", name='<b>&"x"'),
             rc.Module("Ry", name="base_link"),

@@ -18,7 +18,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .._errors import InvalidInputError
-from .._validation import Rejected, check_json_object
+from .._validation import Rejected, check_json_object, one_line
 from ..motion import SimulationSettings
 from ..signals import Constant, Signal, signal_from_dict
 from ._schema import (
@@ -225,11 +225,11 @@ class Setup:
             )
         version = data.get("version")
         if isinstance(version, bool) or not isinstance(version, int) or version < 1:
-            raise InvalidInputError("version", version, f"an integer 1…{VERSION}")
+            raise InvalidInputError("version", one_line(version), f"an integer 1…{VERSION}")
         if version > VERSION:
             raise InvalidInputError(
                 "version",
-                version,
+                one_line(version),
                 f"versions up to {VERSION}: update robotconf to read it",
                 problem="written by a newer robotconf: file format version",
             )
@@ -272,8 +272,9 @@ def load_setup(source: str | bytes | os.PathLike[str]) -> Setup:
     Parameters
     ----------
     source : path, JSON text or bytes
-        A :class:`~pathlib.Path`; a str whose first non-blank character is ``{``, ``[``
-        or ``"`` (JSON text) or else names a file; or the file's bytes (UTF-8).
+        A :class:`~pathlib.Path`; a str whose first non-blank character (after a
+        byte-order mark) is ``{``, ``[`` or ``"`` (JSON text) or else names a file; or the
+        file's bytes (UTF-8, with or without a byte-order mark).
 
     Returns
     -------
@@ -308,8 +309,9 @@ def load_setup(source: str | bytes | os.PathLike[str]) -> Setup:
             raise InvalidInputError(
                 "file", source[:20], "UTF-8 text", problem=f"invalid UTF-8 at byte {error.start}:"
             ) from None
-    elif isinstance(source, str) and source.lstrip()[:1] in ("{", "[", '"'):
-        text = source
+    elif isinstance(source, str) and source.lstrip("\ufeff").lstrip()[:1] in ("{", "[", '"'):
+        # Text copied from a file saved "with BOM" starts with U+FEFF; json refuses it.
+        text = source.lstrip("\ufeff")
     elif isinstance(source, (str, os.PathLike)):
         text = _read(source)
     else:

@@ -11,8 +11,8 @@ from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
 from .._errors import InvalidInputError
-from .._validation import check_json_number, check_json_object
-from ..kinematics import MODULE_KINDS, DHLink, Module
+from .._validation import check_json_number, check_json_object, one_line
+from ..kinematics import MAX_MODULES, MAX_NAME_CHARS, MODULE_KINDS, DHLink, Module
 from ..motion import SimulationSettings
 
 if TYPE_CHECKING:
@@ -32,10 +32,9 @@ __all__ = [
 FORMAT = "robotconf"
 #: The schema version this robotconf writes and the newest it reads.
 VERSION = 1
-#: Most links in a file: a teaching tool's robots have a handful; 64 is generous.
-MAX_LINKS = 64
-#: Longest robot or link name.
-MAX_NAME_CHARS = 200
+#: Most links in a file: a teaching tool's robots have a handful; 64 is generous (and a
+#: robot's own limit, :data:`~robotconf.kinematics.MAX_MODULES`).
+MAX_LINKS = MAX_MODULES
 
 _MODULE_KEYS = {"type": True, "kind": True, "a": False, "q": False, "name": False, "limits": False}
 _DH_KEYS = {
@@ -63,7 +62,10 @@ def numbers(value: Any, path: str, count: int) -> list[float]:
     """A JSON list of exactly ``count`` finite numbers."""
     if not isinstance(value, list) or len(value) != count:
         raise InvalidInputError(
-            path, value, f"a list of {count} finite numbers", problem=f"expected {count} numbers:"
+            path,
+            one_line(value),
+            f"a list of {count} finite numbers",
+            problem=f"expected {count} numbers:",
         )
     return [check_json_number(v, f"{path}[{i}]") for i, v in enumerate(value)]
 
@@ -72,7 +74,7 @@ def text(value: Any, path: str, choices: tuple[str, ...] | None = None) -> str:
     """A JSON string (optionally one of ``choices``), at most MAX_NAME_CHARS long."""
     allowed = " or ".join(repr(c) for c in choices) if choices else "text"
     if not isinstance(value, str):
-        raise InvalidInputError(path, value, allowed, problem="expected text, got")
+        raise InvalidInputError(path, one_line(value), allowed, problem="expected text, got")
     if choices is not None and value not in choices:
         raise InvalidInputError(path, value, allowed, problem="unknown value")
     if len(value) > MAX_NAME_CHARS:
@@ -104,7 +106,7 @@ def link_from_dict(value: Any, path: str) -> Module | DHLink:
         kind = value.get("type") if isinstance(value, Mapping) else value
         raise InvalidInputError(
             f"{path}.type" if isinstance(value, Mapping) else path,
-            kind,
+            one_line(kind),
             'an object with "type": "module" or "dh"',
             problem="unknown link type",
         )
@@ -150,7 +152,9 @@ def robot_from_dict(value: Any, path: str = "robot") -> Robot:
     links = value["links"]
     allowed = f"a list of 1 to {MAX_LINKS} links"
     if not isinstance(links, list) or not links:
-        raise InvalidInputError(f"{path}.links", links, allowed, problem="not a non-empty list:")
+        raise InvalidInputError(
+            f"{path}.links", one_line(links), allowed, problem="not a non-empty list:"
+        )
     if len(links) > MAX_LINKS:
         raise InvalidInputError(
             f"{path}.links", f"<{len(links)} links>", allowed, problem="too many links:"

@@ -17,7 +17,9 @@ about or along a fixed axis, so module ``i`` becomes
   module's link.
 
 The file holds kinematics only: links have no inertia, visuals or collisions.
-Only the standard library's XML writer is used, which escapes every attribute.
+Only the standard library's XML writer is used, which escapes every attribute. Every
+number written is finite: a ``scale`` that would push a length past the float range is
+refused, and a last check refuses any inf or NaN before it reaches the text.
 """
 
 from __future__ import annotations
@@ -29,8 +31,9 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._budget import check_finite_result
 from .._errors import InvalidInputError
-from .._validation import check_finite_number
+from .._validation import as_float_array, check_finite_number, one_line
 from ..kinematics import JOINT_OF_LETTER, LinkGeometry, link_matrices
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -74,7 +77,12 @@ def rpy_from_matrix(rotation: Any) -> tuple[float, float, float]:
     >>> np.round(rpy_from_matrix([[0, 0, 1], [0, 1, 0], [-1, 0, 0]]), 12) + 0.0  # Ry(π/2)
     array([0.        , 1.57079633, 0.        ])
     """
-    r = np.asarray(rotation, dtype=float)
+    allowed = "a 3×3 rotation matrix of finite numbers"
+    r = as_float_array(rotation, "rotation", allowed)
+    if r.shape != (3, 3) or not np.isfinite(r).all():
+        raise InvalidInputError(
+            "rotation", one_line(rotation), allowed, problem="expected finite shape (3, 3):"
+        )
     cos_pitch = math.hypot(r[0, 0], r[1, 0])
     pitch = math.atan2(-r[2, 0], cos_pitch)
     if cos_pitch > 1e-12:
@@ -98,9 +106,21 @@ def _parts(g: LinkGeometry | None) -> tuple[np.ndarray, np.ndarray]:
 def _number(value: float) -> str:
     """Shortest text that reads back as the same float; whole numbers without ``.0``."""
     value = float(value)
+    if not math.isfinite(value):  # the checks before should make this impossible
+        raise InvalidInputError(
+            "robot", value, "finite numbers only", problem="URDF would get a non-finite number:"
+        )
     if abs(value) < ZERO_BELOW:
         return "0"
     return str(int(value)) if value.is_integer() and abs(value) < 1e15 else repr(value)
+
+
+def _scaled(values: np.ndarray, scale: float) -> np.ndarray:
+    """Lengths times ``scale``, refused when the product leaves the float range."""
+    with np.errstate(over="ignore"):
+        out = values * scale
+    check_finite_result(out, "scale", scale, "the scaled lengths")
+    return out
 
 
 def _triple(values: Any) -> str:
@@ -168,8 +188,8 @@ def to_urdf(
     Raises
     ------
     InvalidInputError
-        For a name that is not text, or a non-positive or non-finite scale, effort or
-        velocity.
+        For a name that is not text, a non-positive or non-finite scale, effort or
+        velocity, or a scale that makes a length overflow (``scale``).
 
     Examples
     --------
@@ -209,8 +229,8 @@ def to_urdf(
     parent = BASE_LINK
     for i, (label, g) in enumerate(zip(robot.module_names, robot.geometry(), strict=True)):
         origin, post = _parts(g)
-        origin[:3, 3] *= scale
-        post[:3, 3] *= scale
+        origin[:3, 3] = _scaled(origin[:3, 3], scale)
+        post[:3, 3] = _scaled(post[:3, 3], scale)
         moving = g is not None and g.axis is not None and g.joint is not None
         has_post = not np.array_equal(post, np.eye(4))
         frame = links.take(label)
@@ -226,7 +246,7 @@ def to_urdf(
             joint = _joint(root, joint_name, kind, parent, child, origin)
             ET.SubElement(joint, "axis", xyz=_triple(np.eye(3)[g.axis]))
             # A stroke is a length and scales; an angle does not.
-            lo, hi = limits[i] * (scale if kind == "prismatic" else 1.0)
+            lo, hi = _scaled(limits[i], scale) if kind == "prismatic" else limits[i]
             ET.SubElement(
                 joint,
                 "limit",
@@ -241,7 +261,7 @@ def to_urdf(
         parent = frame
     ET.SubElement(root, "link", name=END_EFFECTOR_LINK)
     tool = np.eye(4)
-    tool[:3, 3] = robot.end_effector_point * scale
+    tool[:3, 3] = _scaled(robot.end_effector_point, scale)
     _joint(root, "end_effector_joint", "fixed", parent, END_EFFECTOR_LINK, tool)
     ET.indent(root, space="  ")
     return '<?xml version="1.0"?>\n' + ET.tostring(root, encoding="unicode") + "\n"

@@ -5,6 +5,9 @@ This folder is the numpy core. Everything here imports numpy only.
 Robots and links
     :class:`Robot`, :class:`Module`, :class:`DHLink`, :class:`Link`, :func:`transfer_matrix`,
     :func:`dh_matrix`, :func:`kind_name`, :func:`check_convention`, :func:`characteristic_length`
+Bounds and names (no chain overflows, no two modules share a name)
+    :data:`MAX_PARAMETER` (1e150), :data:`MAX_MODULES` (64), :data:`MAX_NAME_CHARS` (200),
+    :func:`check_parameter`, :func:`check_name`, :func:`check_module_names`
 Conventions (data, see docs/conventions.md)
     :data:`MODULE_KINDS`, :data:`MODULE_CODES`, :data:`JOINT_TYPES`, :data:`AXIS_NAMES`,
     :data:`DH_CONVENTIONS`, :data:`DH_FACTORS`, :func:`dh_formula`, …
@@ -21,6 +24,7 @@ Building blocks (the kernel and the component-major helpers the motion layer use
 array([2., 0., 1.])
 """
 
+from ._bounds import MAX_MODULES, MAX_PARAMETER, check_parameter, check_parameter_vector
 from ._conventions import (
     AXIS_NAMES,
     DH_CONVENTIONS,
@@ -65,14 +69,23 @@ from ._kernel import (
     chain_point_pose,
     chain_poses,
     cos_sin,
+    kernel_bytes,
     link_matrices,
 )
 from ._limits import chain_length, chain_limits, check_limits, default_limits
 from ._link import Link
 from ._module import Module, kind_name, transfer_matrix
+from ._names import MAX_NAME_CHARS, check_module_names, check_name
 from ._points import END_EFFECTOR_LABEL, RobotPoint, format_point, robot_points
 from ._robot import Robot, characteristic_length
-from ._workspace import MAX_WORKSPACE_SAMPLES, WORKSPACE_METHODS, Workspace, grid_size, workspace
+from ._workspace import (
+    MAX_WORKSPACE_SAMPLES,
+    WORKSPACE_METHODS,
+    Workspace,
+    grid_size,
+    workspace,
+    workspace_bytes,
+)
 
 __all__ = [
     # robots and links
@@ -90,6 +103,14 @@ __all__ = [
     "chain_length",
     "chain_limits",
     "default_limits",
+    # bounds and names (docs: robotconf.kinematics._bounds, ._names)
+    "MAX_PARAMETER",
+    "MAX_MODULES",
+    "MAX_NAME_CHARS",
+    "check_parameter",
+    "check_parameter_vector",
+    "check_name",
+    "check_module_names",
     # conventions
     "MODULE_KINDS",
     "MODULE_CODES",
@@ -129,6 +150,7 @@ __all__ = [
     "WORKSPACE_METHODS",
     "MAX_WORKSPACE_SAMPLES",
     "grid_size",
+    "workspace_bytes",
     # building blocks
     "LinkGeometry",
     "BLOCK_SIZE",
@@ -138,6 +160,7 @@ __all__ = [
     "chain_point",
     "chain_point_pose",
     "link_matrices",
+    "kernel_bytes",
     "JointScrew",
     "joint_screws",
     "pose_components",

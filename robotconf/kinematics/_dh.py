@@ -9,11 +9,13 @@ from typing import Any
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import check_finite_number
+from .._validation import check_finite_number, one_line
+from ._bounds import check_parameter
 from ._conventions import DH_CONVENTIONS, DH_PARAMETERS, JOINT_LETTERS, JOINT_OF_LETTER, dh_formula
 from ._geometry import LinkGeometry
 from ._limits import check_limits
 from ._link import Link
+from ._names import check_name
 
 __all__ = ["DHLink", "dh_matrix", "dh_link_from_row", "check_convention"]
 
@@ -32,7 +34,10 @@ def check_convention(convention: Any) -> str:
     """
     if not isinstance(convention, str) or convention.strip().lower() not in DH_CONVENTIONS:
         raise InvalidInputError(
-            "convention", convention, _CONVENTIONS_ALLOWED, problem="unknown DH convention"
+            "convention",
+            one_line(convention),
+            _CONVENTIONS_ALLOWED,
+            problem="unknown DH convention",
         )
     return convention.strip().lower()
 
@@ -67,9 +72,19 @@ class DHLink(Link):
     q : float
         The joint coordinate's own value.
     name : str, optional
+        At most 200 characters.
     limits : (lo, hi), optional
         Range of ``q`` (radians for "R", length for "P"), ``lo < hi``; ``None``: the
         robot's default (see :meth:`Robot.joint_limits`). Not enforced on ``q``.
+
+    Every number (θ, d, a, α, q and the limits) must be finite and at most ``1e150`` in
+    magnitude (:data:`~robotconf.kinematics.MAX_PARAMETER`), so no chain overflows.
+
+    Raises
+    ------
+    InvalidInputError
+        For a parameter that is not a real number, not finite or too large, an unknown
+        joint or convention, a name that is not text or too long, or a bad range.
 
     Examples
     --------
@@ -93,19 +108,20 @@ class DHLink(Link):
 
     def __post_init__(self) -> None:
         for attribute in ("theta", "d", "a", "alpha", "q"):
-            value = check_finite_number(getattr(self, attribute), attribute)
+            value = check_parameter(getattr(self, attribute), attribute)
             object.__setattr__(self, attribute, value)
         joint_type = (
             JOINT_OF_LETTER.get(self.joint.strip().upper()) if isinstance(self.joint, str) else None
         )
         if joint_type is None:
             raise InvalidInputError(
-                "joint", self.joint, "'R' (revolute: q adds to θ) or 'P' (prismatic: q adds to d)"
+                "joint",
+                one_line(self.joint),
+                "'R' (revolute: q adds to θ) or 'P' (prismatic: q adds to d)",
             )
         object.__setattr__(self, "joint", JOINT_LETTERS[joint_type])
         object.__setattr__(self, "convention", check_convention(self.convention))
-        if self.name is not None and not isinstance(self.name, str):
-            raise InvalidInputError("name", self.name, "text or None")
+        check_name(self.name)
         object.__setattr__(self, "limits", check_limits(self.limits))
 
     def __repr__(self) -> str:
@@ -278,13 +294,15 @@ def dh_link_from_row(row: Any, convention: str, index: int) -> DHLink:
     if isinstance(row, Mapping):
         unknown = set(row) - {*_DH_FIELDS, "q", "name", "limits"}
         if unknown:
-            raise InvalidInputError(field, row, allowed, problem=f"unknown keys {sorted(unknown)}:")
+            raise InvalidInputError(
+                field, one_line(row), allowed, problem=f"unknown keys {sorted(unknown)}:"
+            )
         missing = [key for key in _DH_FIELDS if key not in row]
         if missing:
-            raise InvalidInputError(field, row, allowed, problem=f"missing {missing}:")
+            raise InvalidInputError(field, one_line(row), allowed, problem=f"missing {missing}:")
         values = dict(row)
     elif isinstance(row, (str, bytes)) or not isinstance(row, Sequence) or len(row) != 5:
-        raise InvalidInputError(field, row, allowed, problem="expected 5 entries, got")
+        raise InvalidInputError(field, one_line(row), allowed, problem="expected 5 entries, got")
     else:
         values = dict(zip(_DH_FIELDS, row, strict=True))
     try:

@@ -22,8 +22,10 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 
-from .._validation import check_joint_values
+from .._budget import check_finite_result, check_memory
+from .._validation import check_joint_values, one_line
 from ._conventions import JOINT_OF_LETTER
+from ._kernel import kernel_bytes
 
 if TYPE_CHECKING:
     from ._robot import Robot
@@ -38,6 +40,9 @@ __all__ = [
     "cross_components",
     "rotate_components",
 ]
+
+
+_SMALLER = "fewer samples per call (split q into chunks), or a larger memory budget"
 
 
 class JointScrew(NamedTuple):
@@ -67,7 +72,14 @@ def pose_components(robot: Robot, q: np.ndarray) -> np.ndarray:
     -------
     ndarray, shape (n, 3, 4, T)
         ``out[i, :, :3]`` is frame i's rotation, ``out[i, :, 3]`` its origin.
+
+    Raises
+    ------
+    InvalidInputError
+        ``q`` when the poses and their copy would not fit the memory budget, or when a
+        frame position overflows.
     """
+    check_memory("q", one_line(q), kernel_bytes(q.shape[0], robot.n, 28 * robot.n), _SMALLER)
     poses = robot.frame_poses(q)
     return np.ascontiguousarray(poses[:, :, :3, :].transpose(1, 2, 3, 0))
 
@@ -158,7 +170,9 @@ def jacobian(robot: Robot, q: Any = None, frame: Any = None) -> np.ndarray:
     Raises
     ------
     InvalidInputError
-        For bad coordinates or an unknown frame.
+        For bad coordinates or an unknown frame; ``q`` when the result would not fit the
+        memory budget, or when frame positions or their differences overflow (only
+        prismatic coordinates near ``1e308`` can do that).
 
     Examples
     --------
@@ -186,16 +200,24 @@ def jacobian(robot: Robot, q: Any = None, frame: Any = None) -> np.ndarray:
         else check_joint_values(q, robot.n, robot.coordinate_names)
     )
     index = robot.n if frame is None else robot.index(frame, "frame", end_effector=True)
+    # Poses, their copy, the (6, n, T) result and its transpose, per-joint temporaries.
+    nbytes = kernel_bytes(values.shape[0], robot.n, 40 * robot.n + 30)
+    check_memory("q", one_line(q), nbytes, _SMALLER)
     poses = pose_components(robot, values)
-    point = ee_position(robot, poses) if index == robot.n else poses[index, :, 3]
     out = np.zeros((6, robot.n, values.shape[0]))
-    for j, screw in enumerate(joint_screws(robot, poses)[: index + 1]):
-        if screw.joint is None:
-            continue
-        if JOINT_OF_LETTER[screw.joint] == "revolute":
-            out[:3, j] = cross_components(screw.axis, point - screw.point)  # type: ignore[arg-type]
-            out[3:, j] = screw.axis
-        else:
-            out[:3, j] = screw.axis
+    # Frame positions are finite (the kernel checks), but p - o_j of two near 1e308 is not:
+    # that becomes the error below rather than numpy's warnings.
+    with np.errstate(over="ignore", invalid="ignore"):
+        point = ee_position(robot, poses) if index == robot.n else poses[index, :, 3]
+        for j, screw in enumerate(joint_screws(robot, poses)[: index + 1]):
+            if screw.joint is None:
+                continue
+            if JOINT_OF_LETTER[screw.joint] == "revolute":
+                lever = point - screw.point  # type: ignore[operator]
+                out[:3, j] = cross_components(screw.axis, lever)  # type: ignore[arg-type]
+                out[3:, j] = screw.axis
+            else:
+                out[:3, j] = screw.axis
     result = np.ascontiguousarray(out.transpose(2, 0, 1))
+    check_finite_result(result, "q", one_line(q), "the Jacobian entries")
     return result if batched else result[0]

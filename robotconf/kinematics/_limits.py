@@ -14,14 +14,15 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import check_finite_number
+from .._validation import check_vector3, one_line
+from ._bounds import MAX_PARAMETER, check_parameter
 
 if TYPE_CHECKING:
     from ._link import Link
 
 __all__ = ["check_limits", "check_link_limits", "chain_length", "chain_limits", "default_limits"]
 
-_ALLOWED = "None, or (lo, hi): two finite numbers with lo < hi"
+_ALLOWED = f"None, or (lo, hi): two finite numbers with lo < hi, |lo|, |hi| ≤ {MAX_PARAMETER:.0e}"
 
 
 def check_limits(value: Any, field: str = "limits") -> tuple[float, float] | None:
@@ -30,7 +31,8 @@ def check_limits(value: Any, field: str = "limits") -> tuple[float, float] | Non
     Parameters
     ----------
     value : None or array-like, shape (2,)
-        ``(lo, hi)``: radians for a revolute joint, length units for a prismatic one.
+        ``(lo, hi)``: radians for a revolute joint, length units for a prismatic one;
+        each at most :data:`~robotconf.kinematics.MAX_PARAMETER` in magnitude.
     field : str
         Name used in error messages.
 
@@ -41,7 +43,8 @@ def check_limits(value: Any, field: str = "limits") -> tuple[float, float] | Non
     Raises
     ------
     InvalidInputError
-        For text, booleans, a length other than 2, NaN or infinity, or ``lo ≥ hi``.
+        For text, booleans, complex numbers, a length other than 2, NaN or infinity,
+        a magnitude above ``1e150``, or ``lo ≥ hi``.
 
     Examples
     --------
@@ -55,9 +58,11 @@ def check_limits(value: Any, field: str = "limits") -> tuple[float, float] | Non
     if value is None:
         return None
     if isinstance(value, (str, bytes)) or not hasattr(value, "__len__") or len(value) != 2:
-        raise InvalidInputError(field, value, _ALLOWED, problem="expected two numbers (lo, hi):")
-    lo = check_finite_number(value[0], f"{field}[0]")
-    hi = check_finite_number(value[1], f"{field}[1]")
+        raise InvalidInputError(
+            field, one_line(value), _ALLOWED, problem="expected two numbers (lo, hi):"
+        )
+    lo = check_parameter(value[0], f"{field}[0]")
+    hi = check_parameter(value[1], f"{field}[1]")
     if not lo < hi:
         raise InvalidInputError(
             field, (lo, hi), _ALLOWED, problem="lower limit must be below upper limit, got"
@@ -103,7 +108,7 @@ def chain_length(links: Sequence[Link], end_effector: Any) -> float:
     >>> chain_length([Module("Rz"), Module("Tz", a=(0, 0, 20))], (40, 0, 0))
     60.0
     """
-    total = float(np.linalg.norm(np.asarray(end_effector, dtype=float)))
+    total = float(np.linalg.norm(check_vector3(end_effector, "end_effector")))
     total += sum(link.constant_length() for link in links)
     return total if total > 0.0 else 1.0
 

@@ -7,7 +7,7 @@ from typing import Any
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import check_finite_number, check_joint_values
+from .._validation import as_float_array, check_finite_number, check_joint_values, one_line
 from ._conventions import DH_LENGTHS, JOINT_LETTERS, JOINT_UNITS, MODULE_OFFSETS
 from ._geometry import LinkGeometry
 from ._kernel import link_matrices
@@ -86,14 +86,16 @@ class Link:
             return np.array([[self.q]]), False
         if np.ndim(q) == 0:
             return np.array([[check_finite_number(q, "q")]]), False
-        if np.ndim(q) != 1:
+        allowed = "one number, or a 1-D array of T numbers"
+        values = as_float_array(q, "q", allowed)  # refuses [1, True], which numpy would not
+        if values.ndim != 1:
             raise InvalidInputError(
                 "q",
-                q,
-                "one number, or a 1-D array of T numbers",
-                problem=f"expected a number or shape (T,), got {np.shape(q)}:",
+                one_line(q),
+                allowed,
+                problem=f"expected a number or shape (T,), got {values.shape}:",
             )
-        column, _ = check_joint_values(np.asarray(q)[:, np.newaxis], 1)
+        column, _ = check_joint_values(values[:, np.newaxis], 1)
         return column, True
 
     def matrix(self, q: Any = None) -> np.ndarray:
@@ -116,7 +118,7 @@ class Link:
         array([1. , 3.5])
         """
         column, batched = self._coordinates(q)
-        out = link_matrices([self.geometry()], column)[:, 0]
+        out = link_matrices([self.geometry()], column, fields=["q"])[:, 0]
         return out if batched else out[0]
 
     def matrix_derivative(self, q: Any = None, order: int = 1) -> np.ndarray:
@@ -150,7 +152,7 @@ class Link:
             raise InvalidInputError("order", order, "an integer ≥ 1")
         column, batched = self._coordinates(q)
         g = self.geometry()
-        screw_matrices = link_matrices([g.screw()], column)[:, 0]
+        screw_matrices = link_matrices([g.screw()], column, fields=["q"])[:, 0]
         tail = np.linalg.matrix_power(g.generator(), int(order)) @ g.post_matrix()
         out = g.pre_matrix() @ screw_matrices @ tail
         return out if batched else out[0]

@@ -8,7 +8,8 @@ from typing import Any
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import check_finite_number, check_vector3
+from .._validation import one_line
+from ._bounds import check_parameter, check_parameter_vector
 from ._conventions import (
     AXIS_NAMES,
     JOINT_LETTERS,
@@ -22,6 +23,7 @@ from ._conventions import (
 from ._geometry import LinkGeometry
 from ._limits import check_link_limits
 from ._link import Link
+from ._names import check_name
 
 __all__ = ["Module", "kind_name", "transfer_matrix"]
 
@@ -69,8 +71,12 @@ def kind_name(kind: Any) -> str:
     if isinstance(kind, (int, np.integer)) and not isinstance(kind, (bool, np.bool_)):
         if 0 <= int(kind) <= _LAST_CODE:
             return MODULE_KINDS[int(kind)]
-        raise InvalidInputError("kind", int(kind), _ALLOWED, problem="unknown movement code")
-    raise InvalidInputError("kind", kind, _ALLOWED, problem="expected a name or a code 0-6, got")
+        raise InvalidInputError(
+            "kind", one_line(int(kind)), _ALLOWED, problem="unknown movement code"
+        )
+    raise InvalidInputError(
+        "kind", one_line(kind), _ALLOWED, problem="expected a name or a code 0-6, got"
+    )
 
 
 @dataclass(frozen=True)
@@ -88,12 +94,13 @@ class Module(Link):
         ``"Tz"`` (any case) or the paper's code 0–6; or ``"fixed"``.
     a : array-like, shape (3,)
         Offset ``(ax, ay, az)`` of this module's frame origin in the preceding frame
-        (length units).
+        (length units), each ``|ax| ≤ 1e150`` (:data:`MAX_PARAMETER`).
     q : float
         Generalized coordinate: radians for rotations, length for translations; ignored
-        by ``none`` and ``fixed``.
+        by ``none`` and ``fixed``. ``|q| ≤ 1e150``.
     name : str, optional
-        Display name; the robot calls unnamed modules ``M1, M2, …``.
+        Display name, at most 200 characters; the robot calls unnamed modules
+        ``M1, M2, …``.
     limits : (lo, hi), optional
         Range of ``q`` (radians for rotations, length for translations), ``lo < hi``;
         only for joints. ``None``: the robot's default (see :meth:`Robot.joint_limits`).
@@ -102,8 +109,9 @@ class Module(Link):
     Raises
     ------
     InvalidInputError
-        On an unknown kind, a malformed or non-finite ``a`` or ``q``, a non-text name, or
-        a malformed range or a range on a ``none``/``fixed`` module.
+        On an unknown kind, a malformed, non-real or non-finite ``a`` or ``q`` or one
+        above ``1e150`` in magnitude, a name that is not text or too long, or a
+        malformed range or a range on a ``none``/``fixed`` module.
 
     Examples
     --------
@@ -129,10 +137,9 @@ class Module(Link):
 
     def __post_init__(self) -> None:
         object.__setattr__(self, "kind", kind_name(self.kind))
-        object.__setattr__(self, "a", check_vector3(self.a, "a"))
-        object.__setattr__(self, "q", check_finite_number(self.q, "q"))
-        if self.name is not None and not isinstance(self.name, str):
-            raise InvalidInputError("name", self.name, "text or None")
+        object.__setattr__(self, "a", check_parameter_vector(self.a, "a"))
+        object.__setattr__(self, "q", check_parameter(self.q, "q"))
+        check_name(self.name)
         object.__setattr__(self, "limits", check_link_limits(self.limits, self.joint_type))
 
     def __repr__(self) -> str:

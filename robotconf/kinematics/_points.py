@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import check_configuration, check_integer, check_vector3
+from .._validation import check_configuration, check_integer, check_vector3, one_line
 
 if TYPE_CHECKING:  # pragma: no cover
     from ._robot import Robot
@@ -111,7 +111,7 @@ def format_point(name: str, xyz: Any, digits: int = 1) -> str:
     'M3 (30.000, 0.000, 20.000)'
     """
     if not isinstance(name, str):
-        raise InvalidInputError("name", name, "text", problem="not text:")
+        raise InvalidInputError("name", one_line(name), "text", problem="not text:")
     digits = check_integer(digits, "digits", 0, 15)
     values = check_vector3(xyz, "xyz")
     # round() first, then + 0.0: a tiny negative would otherwise print as "-0.0".

@@ -9,13 +9,23 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._budget import check_memory
 from .._errors import InvalidInputError
-from .._validation import check_configuration, check_integer, check_joint_values, check_vector3
+from .._validation import check_configuration, check_integer, check_joint_values, one_line
+from ._bounds import MAX_MODULES, check_parameter_vector
 from ._dh import check_convention, dh_link_from_row
 from ._geometry import LinkGeometry
-from ._kernel import chain_origins, chain_point, chain_point_pose, chain_poses, link_matrices
+from ._kernel import (
+    chain_origins,
+    chain_point,
+    chain_point_pose,
+    chain_poses,
+    kernel_bytes,
+    link_matrices,
+)
 from ._limits import chain_length, chain_limits
 from ._link import Link
+from ._names import check_module_names, check_name
 
 if TYPE_CHECKING:
     from ..signals import Signal
@@ -26,34 +36,27 @@ __all__ = ["Robot", "characteristic_length"]
 def _check_links(modules: Any) -> tuple[Link, ...]:
     if isinstance(modules, (str, bytes, Link)) or not isinstance(modules, Iterable):
         raise InvalidInputError(
-            "modules", modules, "a list of Module or DHLink objects", problem="not a list:"
+            "modules",
+            one_line(modules),
+            "a list of Module or DHLink objects",
+            problem="not a list:",
         )
-    links = tuple(modules)
-    if not links:
-        raise InvalidInputError("modules", [], "at least one Module or DHLink", problem="empty:")
-    for i, link in enumerate(links):
+    allowed = f"at least one Module or DHLink, and at most {MAX_MODULES}"
+    links = []
+    for i, link in enumerate(modules):
+        if i == MAX_MODULES:  # stop reading: the list may be huge (or endless)
+            raise InvalidInputError(
+                "modules", f"<more than {MAX_MODULES} links>", allowed, problem="too many:"
+            )
         if not isinstance(link, Link):
             raise InvalidInputError(
-                f"modules[{i}]", link, "a Module or DHLink", problem="not a link:"
+                f"modules[{i}]", one_line(link), "a Module or DHLink", problem="not a link:"
             )
-        _check_module_name(link.name, i, len(links))
-    return links
-
-
-def _check_module_name(name: str | None, i: int, n: int) -> None:
-    # A module, its coordinate and the end-effector are all found by name (Robot.index), so
-    # a module may not take the end-effector's name or another module's coordinate name.
-    if name is None:
-        return
-    label = name.strip().lower()
-    other_coordinate = label in {f"q{k + 1}" for k in range(n)} - {f"q{i + 1}"}
-    if label == "ee" or other_coordinate:
-        raise InvalidInputError(
-            f"modules[{i}].name",
-            name,
-            f"a name other than 'EE' and the coordinate names q1 to q{n} (q{i + 1} is fine)",
-            problem="ambiguous module name",
-        )
+        links.append(link)
+    if not links:
+        raise InvalidInputError("modules", [], allowed, problem="empty:")
+    check_module_names([link.name for link in links])
+    return tuple(links)
 
 
 class Robot:
@@ -62,22 +65,32 @@ class Robot:
     Immutable: every ``with_…`` method returns a new robot, so an editor can always keep
     the last valid one.
 
+    Every module has a unique display name — its own ``name``, else ``M1, M2, …`` by
+    position — because modules are looked up (:meth:`index`), plotted and labelled by it.
+    A robot refuses two modules with the same name (the error names both indices), a
+    module named like another module's default (``"M2"`` while the second module is
+    unnamed), like another module's coordinate (``"q2"``) or like the end-effector
+    (``"EE"``). Rename one of them, or leave it unnamed.
+
     Parameters
     ----------
-    modules : sequence of Module or DHLink, length n ≥ 1
+    modules : sequence of Module or DHLink, length 1 ≤ n ≤ 64
         The chain from the base ``[T0]`` outwards; modules and DH links may be mixed.
     end_effector : array-like, shape (3,)
-        The end-effector point ``P = (Px, Py, Pz)`` in the last module's frame (length).
+        The end-effector point ``P = (Px, Py, Pz)`` in the last module's frame (length),
+        each ``|P| ≤ 1e150`` (:data:`~robotconf.kinematics.MAX_PARAMETER`).
     active : int, optional
         The paper's "number of active modules" ``k`` (1 ≤ k ≤ n): modules after the k-th
         act as identity. Default: all.
     name : str, optional
+        At most 200 characters.
 
     Raises
     ------
     InvalidInputError
-        For an empty or non-link module list, a bad end-effector point, ``active`` out
-        of range or a non-text name.
+        For an empty or non-link module list or more than 64 links (``modules``), module
+        names that clash (``modules[i].name``), a bad end-effector point, ``active`` out
+        of range or a name that is not text or too long.
 
     Examples
     --------
@@ -96,6 +109,13 @@ class Robot:
     array([70.,  0., 20.])
     >>> robot.frame_poses(np.zeros((1000, 3))).shape
     (1000, 3, 4, 4)
+
+    Two modules may not share a name:
+
+    >>> Robot([Module("Rz", name="base"), Module("Ry", name="base")])
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: modules[1].name: modules[0] and modules[1] are both named ...
     """
 
     __slots__ = ("_links", "_end_effector", "_active", "_name", "_geometry")
@@ -108,12 +128,11 @@ class Robot:
         name: str | None = None,
     ):
         links = _check_links(modules)
-        point = check_vector3(end_effector, "end_effector")
+        point = check_parameter_vector(end_effector, "end_effector")
         if active is not None:
             allowed = f"an integer from 1 to {len(links)}, or None for all"
             active = check_integer(active, "active", 1, len(links), allowed)
-        if name is not None and not isinstance(name, str):
-            raise InvalidInputError("name", name, "text or None")
+        check_name(name)
         self._links = links
         self._end_effector = point
         self._active = active
@@ -161,7 +180,10 @@ class Robot:
         convention = check_convention(convention)
         if isinstance(rows, (str, bytes, Mapping)) or not isinstance(rows, Iterable):
             raise InvalidInputError(
-                "rows", rows, "a list of DH rows (theta, d, a, alpha, joint)", problem="not a list:"
+                "rows",
+                one_line(rows),
+                "a list of DH rows (theta, d, a, alpha, joint)",
+                problem="not a list:",
             )
         links = [dh_link_from_row(row, convention, i) for i, row in enumerate(rows)]
         if not links:
@@ -185,7 +207,12 @@ class Robot:
         array([0.5, 2. ])
         """
         values = check_configuration(q, self.n, self.coordinate_names)
-        links = [link.with_q(float(v)) for link, v in zip(self._links, values, strict=True)]
+        links = []
+        for i, (link, v) in enumerate(zip(self._links, values, strict=True)):
+            try:
+                links.append(link.with_q(float(v)))
+            except InvalidInputError as error:  # e.g. |q| above MAX_PARAMETER
+                raise error.within(f"modules[{i}]") from None
         return self._replace(modules=links)
 
     def with_module(self, index: int, module: Link) -> Robot:
@@ -390,11 +417,26 @@ class Robot:
             return self.q[np.newaxis, :], False
         return check_joint_values(q, self.n, self.coordinate_names)
 
-    def _compute(self, kernel: Any, q: Any, out: np.ndarray | None, *args: Any) -> np.ndarray:
+    def _compute(
+        self, kernel: Any, floats: int, q: Any, out: np.ndarray | None, *args: Any
+    ) -> np.ndarray:
+        """Run a kernel; ``floats`` is the size of its result per sample."""
         values, batched = self._coordinates(q)
-        if out is not None and not batched:
+        if out is None:
+            # A q given as a list or as integers was converted: that copy is alive too.
+            given = isinstance(q, np.ndarray) and q.dtype == np.float64
+            converted = 0.0 if q is None or given else 8.0 * values.size
+            check_memory(
+                "q",
+                one_line(q),
+                kernel_bytes(values.shape[0], self.n, floats) + converted,
+                "fewer samples per call (split q into chunks), or a larger memory budget",
+            )
+        elif not batched:
             # A single configuration writes into out as a one-sample batch.
             out = out[np.newaxis] if isinstance(out, np.ndarray) else out
+        # The modules' own q are bounded (MAX_PARAMETER), so an overflow, which the kernel
+        # refuses naming q[i], can only come from a q given here.
         result = kernel(self._geometry, values, *args, out=out)
         return result if batched else result[0]
 
@@ -423,7 +465,7 @@ class Robot:
                [0. , 0. , 1. , 0.5],
                [0. , 0. , 0. , 1. ]])
         """
-        return self._compute(link_matrices, q, out)
+        return self._compute(link_matrices, 16 * self.n, q, out)
 
     def frame_poses(self, q: Any = None, *, out: np.ndarray | None = None) -> np.ndarray:
         """Cumulative matrices ``M_i = A_1·A_2⋯A_i``: each module frame in the base frame.
@@ -440,6 +482,15 @@ class Robot:
         ndarray, shape (n, 4, 4) or (T, n, 4, 4)
             Vectorized over ``T`` (no Python loop over samples).
 
+        Raises
+        ------
+        InvalidInputError
+            ``q`` for coordinates that are not finite real numbers or have the wrong
+            shape, or when the result would not fit the memory budget (about ``128·n``
+            bytes per sample, see :func:`robotconf.set_memory_budget`); ``q[i]`` when a
+            prismatic coordinate near ``1e308`` pushes a frame past the float range. The
+            other kinematics methods raise the same errors.
+
         Examples
         --------
         A slide along x followed by a quarter turn about z: the second frame sits where the
@@ -455,7 +506,7 @@ class Robot:
         >>> robot.frame_poses(np.zeros((500, 2))).shape
         (500, 2, 4, 4)
         """
-        return self._compute(chain_poses, q, out)
+        return self._compute(chain_poses, 16 * self.n, q, out)
 
     def frame_origins(self, q: Any = None, *, out: np.ndarray | None = None) -> np.ndarray:
         """Origins of the module frames in the base frame (where the paper draws spheres).
@@ -471,7 +522,7 @@ class Robot:
         ndarray, shape (n, 3) or (T, n, 3)
             Length units; computed without building 4×4 stacks.
         """
-        return self._compute(chain_origins, q, out)
+        return self._compute(chain_origins, 3 * self.n, q, out)
 
     def end_effector(self, q: Any = None, *, out: np.ndarray | None = None) -> np.ndarray:
         """End-effector position ``p_EE = M_n · [Px, Py, Pz, 1]ᵀ`` in the base frame.
@@ -494,7 +545,7 @@ class Robot:
         >>> arm.end_effector([np.pi / 2, -np.pi / 2]).round(12) + 0.0
         array([1., 1., 0.])
         """
-        return self._compute(chain_point, q, out, np.array(self._end_effector))
+        return self._compute(chain_point, 3, q, out, np.array(self._end_effector))
 
     def end_effector_pose(self, q: Any = None, *, out: np.ndarray | None = None) -> np.ndarray:
         """Pose of the end-effector: ``M_n`` with the EE point as its origin.
@@ -516,7 +567,7 @@ class Robot:
         >>> robot.end_effector_pose([0.0])[:3, 3]
         array([1., 0., 2.])
         """
-        return self._compute(chain_point_pose, q, out, np.array(self._end_effector))
+        return self._compute(chain_point_pose, 16, q, out, np.array(self._end_effector))
 
     def jacobian(self, q: Any = None, frame: Any = None) -> np.ndarray:
         """Geometric Jacobian of a module frame's origin or of the end-effector.

@@ -18,8 +18,11 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._budget import check_memory
 from .._errors import InvalidInputError
-from .._validation import as_float_array, check_flag, check_integer, check_vector3
+from .._validation import as_float_array, check_flag, check_integer, check_vector3, one_line
+from ._bounds import MAX_PARAMETER
+from ._kernel import kernel_bytes
 
 if TYPE_CHECKING:  # pragma: no cover
     import pandas as pd
@@ -27,13 +30,21 @@ if TYPE_CHECKING:  # pragma: no cover
 
     from ._robot import Robot
 
-__all__ = ["workspace", "Workspace", "WORKSPACE_METHODS", "MAX_WORKSPACE_SAMPLES", "PROGRESS_AFTER"]
+__all__ = [
+    "workspace",
+    "Workspace",
+    "WORKSPACE_METHODS",
+    "MAX_WORKSPACE_SAMPLES",
+    "PROGRESS_AFTER",
+    "workspace_bytes",
+]
 
 #: Sampling methods: ``random`` (uniform in the ranges) or ``grid`` (evenly spaced).
 WORKSPACE_METHODS = ("random", "grid")
 
 #: Ceiling on samples: each holds n + 3 floats (120 bytes for 12 modules), so 5·10⁷
 #: samples already need about 6 GB; ask for fewer or raise ``max_samples`` knowingly.
+#: Below it, the memory budget (:func:`robotconf.set_memory_budget`) has the last word.
 MAX_WORKSPACE_SAMPLES = 50_000_000
 
 #: A progress bar appears (with ``progress=None``) when the run is expected to last
@@ -50,17 +61,28 @@ def _check_count(value: Any, field: str, limit: int) -> int:
 
 
 def _check_ranges_array(values: Any, robot: Robot) -> np.ndarray:
-    allowed = f"shape ({robot.n}, 2): one finite (lo, hi) with lo ≤ hi per coordinate"
+    allowed = (
+        f"shape ({robot.n}, 2): one finite (lo, hi) with lo ≤ hi and |lo|, |hi| ≤ "
+        f"{MAX_PARAMETER:.0e} per coordinate"
+    )
     array = as_float_array(values, "ranges", allowed)
     if array.shape != (robot.n, 2):
         raise InvalidInputError(
-            "ranges", values, allowed, problem=f"expected shape ({robot.n}, 2), got {array.shape}:"
+            "ranges",
+            one_line(values),
+            allowed,
+            problem=f"expected shape ({robot.n}, 2), got {array.shape}:",
         )
     names = robot.coordinate_names
     for i, (lo, hi) in enumerate(array):
         if not (np.isfinite(lo) and np.isfinite(hi)):
             raise InvalidInputError(
                 "ranges", (float(lo), float(hi)), allowed, problem=f"{names[i]} must be finite, got"
+            )
+        # hi - lo of two floats near ±1e308 would overflow, and so would the samples.
+        if max(abs(lo), abs(hi)) > MAX_PARAMETER:
+            raise InvalidInputError(
+                "ranges", (float(lo), float(hi)), allowed, problem=f"{names[i]} is too large:"
             )
         if lo > hi:
             raise InvalidInputError(
@@ -82,7 +104,10 @@ def _resolve_ranges(robot: Robot, ranges: Any) -> np.ndarray:
         row = as_float_array(pair, f"ranges[{key!r}]", allowed)
         if row.shape != (2,):
             raise InvalidInputError(
-                f"ranges[{key!r}]", pair, allowed, problem=f"expected 2 numbers, got {row.shape}:"
+                f"ranges[{key!r}]",
+                one_line(pair),
+                allowed,
+                problem=f"expected 2 numbers, got {row.shape}:",
             )
         base[index] = row
     return _check_ranges_array(base, robot)
@@ -91,7 +116,7 @@ def _resolve_ranges(robot: Robot, ranges: Any) -> np.ndarray:
 def _check_method(method: Any) -> str:
     allowed = "'random' (uniform samples) or 'grid' (evenly spaced values)"
     if not isinstance(method, str) or method.strip().lower() not in WORKSPACE_METHODS:
-        raise InvalidInputError("method", method, allowed, problem="unknown method")
+        raise InvalidInputError("method", one_line(method), allowed, problem="unknown method")
     return method.strip().lower()
 
 
@@ -134,6 +159,21 @@ def grid_size(samples: int, free: int) -> int:
     while (m + 1) ** free <= samples:
         m += 1
     return m
+
+
+def workspace_bytes(samples: int, n: int) -> float:
+    """Peak bytes :func:`workspace` allocates for ``samples`` points of an ``n``-link robot.
+
+    The joint values and points it keeps (``n + 3`` floats per sample) and one chunk of
+    sampling and kinematics scratch; calibrated with ``tracemalloc`` (the estimate is
+    never below the measured peak, for 10³ to 10⁶ samples of 3 and 6 links, random and
+    grid; within 8 % of it for 10⁶ samples).
+
+    >>> workspace_bytes(1_000_000, 6) / 1e6  # about 72 MB of points and joint values
+    79.42...
+    """
+    chunk = min(samples, CHUNK_SIZE)
+    return 8.0 * samples * (n + 3) + kernel_bytes(chunk, n, 0) + 8.0 * chunk * (n + 4)
 
 
 class _Sampler:
@@ -220,9 +260,10 @@ def workspace(
     Raises
     ------
     InvalidInputError
-        For ``samples`` ≤ 0 or too many, a wrong range shape, ``lo > hi``, NaN or
-        infinite ranges, an unknown coordinate name, an unknown method, a bad seed, or
-        too few samples for a grid.
+        For ``samples`` ≤ 0 or too many (also: more than the memory budget holds, about
+        ``8 (n + 3)`` bytes per sample), a wrong range shape, ``lo > hi``, NaN, infinite
+        or too large (``|x| > 1e150``) ranges, an unknown coordinate name, an unknown
+        method, a bad seed, or too few samples for a grid.
 
     Examples
     --------
@@ -247,6 +288,12 @@ def workspace(
     bounds = _resolve_ranges(robot, ranges)
     sampler = _Sampler(bounds, count, method, seed)
     total = sampler.total
+    check_memory(
+        "samples",
+        count,
+        workspace_bytes(total, robot.n),
+        "fewer samples, or a larger memory budget (robotconf.set_memory_budget)",
+    )
     q = np.empty((total, robot.n))
     points = np.empty((total, 3))
     started = time.perf_counter()

@@ -13,14 +13,26 @@ other: ``saw * 0.5 + 1``, ``-sig``, ``a + b``.
 array([1. , 1.5, 1. ])
 >>> saw.kinks(0.0, 5.0)
 array([0., 2., 4.])
+
+Limits (each refused with an error naming the parameter): profile durations and periods
+of at least :data:`MIN_DURATION` (1e-9 s); velocity and acceleration scales below
+:data:`MAX_RATE` (1e306); tables of at most :data:`MAX_TABLE_POINTS` points. A value that
+would still overflow at some time (a ramp at ``t = 1e308``) is refused when evaluated.
 """
 
-from ._base import Affine, Signal, Sum
+from ._base import MAX_RATE, MIN_DURATION, Affine, Signal, Sum
 from ._profiles import Cubic, Quintic, Trapezoidal
-from ._repeating import RepeatingSequence
+from ._repeating import MAX_TABLE_POINTS, RepeatingSequence
 from ._serialize import SIGNAL_TYPES, signal_from_dict
 from ._sources import Constant, Ramp, Sine, Step
-from ._spec import MAX_SPEC_LENGTH, SIGNAL_KINDS, SPEC_HELP, parse_signal, parse_signal_spec
+from ._spec import (
+    MAX_NUMBER_CHARS,
+    MAX_SPEC_LENGTH,
+    SIGNAL_KINDS,
+    SPEC_HELP,
+    parse_signal,
+    parse_signal_spec,
+)
 
 __all__ = [
     "Affine",
@@ -41,5 +53,10 @@ __all__ = [
     "SIGNAL_KINDS",
     "SPEC_HELP",
     "MAX_SPEC_LENGTH",
+    "MAX_NUMBER_CHARS",
     "Trapezoidal",
+    # limits
+    "MIN_DURATION",
+    "MAX_RATE",
+    "MAX_TABLE_POINTS",
 ]

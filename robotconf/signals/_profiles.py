@@ -4,6 +4,12 @@ Each moves a coordinate from ``start`` to ``end`` in ``duration`` seconds beginn
 ``start_time``; it holds ``start`` before and ``end`` after. Velocity is continuous in all
 three, so none has kinks. The acceleration of the cubic (at both ends) and of the
 trapezoid (at its four corners) jumps; there the **right-sided** value is reported.
+
+Limits: ``duration ≥`` :data:`~robotconf.signals.MIN_DURATION` (1e-9 s), the
+trapezoid's blend ``accel_fraction · duration`` too, and the distance ``end − start``
+must be small enough for the duration that the peak velocity and acceleration stay
+finite with room to spare (``|Δ| / duration`` and ``|Δ| / duration²`` below 1e306 — far
+beyond any machine). A profile outside these limits is refused when it is made.
 """
 
 from __future__ import annotations
@@ -14,7 +20,7 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number
-from ._base import Signal
+from ._base import MAX_RATE, MIN_DURATION, Signal
 
 __all__ = ["Cubic", "Quintic", "Trapezoidal"]
 
@@ -32,6 +38,42 @@ class _PointToPoint(Signal):
         if self.duration <= 0.0:
             raise InvalidInputError(
                 "duration", self.duration, "a duration > 0 (s)", problem="must be positive, got"
+            )
+        if self.duration < MIN_DURATION:
+            raise InvalidInputError(
+                "duration",
+                self.duration,
+                f"a duration ≥ {MIN_DURATION:g} s",
+                problem="too short:",
+            )
+        if not np.isfinite(self.start_time + self.duration):
+            raise InvalidInputError(
+                "start_time",
+                self.start_time,
+                "a start time whose end time (start_time + duration) is finite",
+                problem="the motion would end after the float range:",
+            )
+        self._check_rates(self.duration)
+
+    def _check_rates(self, time: float) -> None:
+        """Refuse a distance that overflows, or is too far for ``time`` seconds."""
+        distance = self.end - self.start
+        if not np.isfinite(distance):
+            raise InvalidInputError(
+                "end",
+                self.end,
+                "start and end whose difference is finite",
+                problem="end − start overflows with",
+            )
+        velocity = abs(distance) / time
+        acceleration = velocity / time
+        if max(velocity, acceleration) > MAX_RATE:
+            shortest = max(abs(distance) / MAX_RATE, (abs(distance) / MAX_RATE) ** 0.5)
+            raise InvalidInputError(
+                "duration",
+                self.duration,
+                f"a duration ≥ {shortest:.3g} s for a distance of {abs(distance):.3g}",
+                problem="too short for the distance (the velocity or acceleration overflows):",
             )
 
     def _extra_repr(self) -> str:
@@ -67,9 +109,15 @@ class Cubic(_PointToPoint):
     start, end : float
         Initial and final value.
     duration : float
-        Motion time (s), > 0.
+        Motion time (s), ≥ 1e-9 s (:data:`~robotconf.signals.MIN_DURATION`).
     start_time : float
         When the motion begins (s).
+
+    Raises
+    ------
+    InvalidInputError
+        For a parameter that is not a finite real number, a duration below 1e-9 s, or a
+        distance too large for the duration (see the module notes).
 
     Examples
     --------
@@ -132,7 +180,8 @@ class Trapezoidal(_PointToPoint):
     start, end, duration, start_time : float
         As for :class:`Cubic`.
     accel_fraction : float
-        Share of ``duration`` spent accelerating, ``0 < accel_fraction ≤ 0.5``.
+        Share of ``duration`` spent accelerating, ``0 < accel_fraction ≤ 0.5``, with a
+        blend time ``accel_fraction · duration ≥ 1e-9`` s.
 
     Examples
     --------
@@ -155,7 +204,16 @@ class Trapezoidal(_PointToPoint):
                 "a number with 0 < accel_fraction ≤ 0.5",
                 problem="out of range:",
             )
+        # The blend is a duration of its own: the acceleration divides by it.
+        if fraction * self.duration < MIN_DURATION:
+            raise InvalidInputError(
+                "accel_fraction",
+                fraction,
+                f"a fraction with accel_fraction · duration ≥ {MIN_DURATION:g} s",
+                problem="the blend time is too short:",
+            )
         object.__setattr__(self, "accel_fraction", fraction)
+        self._check_rates(fraction * self.duration)
 
     def _extra_repr(self) -> str:
         return "" if self.accel_fraction == 0.25 else f", accel_fraction={self.accel_fraction!r}"
@@ -169,9 +227,11 @@ class Trapezoidal(_PointToPoint):
 
     def _value(self, t: np.ndarray) -> np.ndarray:
         s, tb, v, a = self._parts(t)
-        rising = self.start + 0.5 * a * s * s
+        # Each branch sees only its own stretch of time, so none overflows where unused.
+        rise = np.minimum(s, tb)
+        rising = self.start + 0.5 * a * rise * rise
         cruising = self.start + v * (s - 0.5 * tb)
-        left = self.duration - s
+        left = np.minimum(self.duration - s, tb)
         falling = self.end - 0.5 * a * left * left
         return np.where(s < tb, rising, np.where(s < self.duration - tb, cruising, falling))
 

@@ -1,4 +1,8 @@
-"""Simulink's Repeating Sequence: a time/value table, interpolated and repeated."""
+"""Simulink's Repeating Sequence: a time/value table, interpolated and repeated.
+
+Limits: at most :data:`MAX_TABLE_POINTS` points, a period (the last time) of at least
+:data:`~robotconf.signals.MIN_DURATION` (1e-9 s), and finite slopes between the points.
+"""
 
 from __future__ import annotations
 
@@ -7,29 +11,47 @@ from typing import Any
 
 import numpy as np
 
+from .._budget import check_memory
 from .._errors import InvalidInputError
-from .._validation import as_float_array
-from ._base import Signal
+from .._validation import as_float_array, one_line
+from ._base import MIN_DURATION, Signal, count_in_span
 
-__all__ = ["RepeatingSequence"]
+__all__ = ["RepeatingSequence", "MAX_TABLE_POINTS"]
+
+#: Most points in one table: a hand-made or file-read sequence has a few dozen.
+MAX_TABLE_POINTS = 10_000
+
+#: Peak bytes per candidate kink while :meth:`RepeatingSequence.kinks` lists them (the
+#: candidate times, the mask, the kept times and np.unique's sorted copy; measured 33).
+_KINK_BYTES = 40
 
 _TIMES = "a list of ≥ 2 finite times (s) starting at 0 and strictly increasing"
 _VALUES = "a list of finite values, one per time"
 
 
 def _table(raw: Any, field_name: str, allowed: str) -> np.ndarray:
+    if np.ndim(raw) == 1 and len(raw) > MAX_TABLE_POINTS:  # before converting all of it
+        raise InvalidInputError(
+            field_name,
+            f"<{len(raw)} entries>",
+            f"at most {MAX_TABLE_POINTS} points",
+            problem="table too long:",
+        )
     array = as_float_array(raw, field_name, allowed, what="a table")
     if array.ndim != 1:
         raise InvalidInputError(
-            field_name, raw, allowed, problem=f"expected a flat list, got shape {array.shape}:"
+            field_name,
+            one_line(raw),
+            allowed,
+            problem=f"expected a flat list, got shape {array.shape}:",
         )
     if array.size == 0:
-        raise InvalidInputError(field_name, raw, allowed, problem="empty table:")
+        raise InvalidInputError(field_name, one_line(raw), allowed, problem="empty table:")
     finite = np.isfinite(array)
     if not finite.all():
         bad = int(np.flatnonzero(~finite)[0])
         raise InvalidInputError(
-            field_name, raw, allowed, problem=f"entry {bad} is {array[bad]}, not finite:"
+            field_name, one_line(raw), allowed, problem=f"entry {bad} is {array[bad]}, not finite:"
         )
     return array
 
@@ -52,15 +74,18 @@ class RepeatingSequence(Signal):
     Parameters
     ----------
     times : array-like, shape (m,)
-        Strictly increasing times (s), ``m ≥ 2``, starting at 0. The last one is the period.
+        Strictly increasing times (s), ``2 ≤ m ≤ 10000``, starting at 0. The last one is
+        the period, at least 1e-9 s.
     values : array-like, shape (m,)
         Output at each time.
 
     Raises
     ------
     InvalidInputError
-        For an empty table, unequal lengths, fewer than two points, NaN or infinity, a
-        first time other than 0, or times that do not strictly increase.
+        For an empty or too long table, unequal lengths, fewer than two points, NaN or
+        infinity, a first time other than 0, times that do not strictly increase, a
+        period below 1e-9 s, or a slope that overflows (values too far apart for the
+        time between them).
 
     Examples
     --------
@@ -110,7 +135,24 @@ class RepeatingSequence(Signal):
                 problem=f"times must strictly increase, but times[{k}] = {t[k]} follows "
                 f"{t[k - 1]}:",
             )
-        for name, array in (("_t", t), ("_v", v), ("_slope", np.diff(v) / step)):
+        if t[-1] < MIN_DURATION:
+            raise InvalidInputError(
+                "times",
+                self.times,
+                f"a last time (the period) ≥ {MIN_DURATION:g} s",
+                problem=f"period {float(t[-1])!r} s is too short:",
+            )
+        with np.errstate(over="ignore", invalid="ignore"):
+            slope = np.diff(v) / step
+        if not np.isfinite(slope).all():
+            k = int(np.flatnonzero(~np.isfinite(slope))[0])
+            raise InvalidInputError(
+                "values",
+                one_line(self.values),
+                "values whose slope (change per second) between neighbouring times is finite",
+                problem=f"the slope from values[{k}] to values[{k + 1}] overflows:",
+            )
+        for name, array in (("_t", t), ("_v", v), ("_slope", slope)):
             array.flags.writeable = False
             object.__setattr__(self, name, array)
         object.__setattr__(self, "times", tuple(t.tolist()))
@@ -140,15 +182,39 @@ class RepeatingSequence(Signal):
     def _acceleration(self, t: np.ndarray) -> np.ndarray:
         return np.zeros(t.shape)
 
-    def _kinks(self, t0: float, t1: float) -> np.ndarray:
+    def _phases(self) -> list[float]:
+        """Where within a period the value or the slope jumps."""
         slope, values = self._slope, self._v
-        phases = [self._t[k] for k in range(1, slope.size) if slope[k] != slope[k - 1]]
+        phases = [float(self._t[k]) for k in range(1, slope.size) if slope[k] != slope[k - 1]]
         if values[-1] != values[0] or slope[-1] != slope[0]:
             phases.append(0.0)  # the wrap-around at every multiple of the period
+        return phases
+
+    def _kink_count(self, t0: float, t1: float) -> int:
+        return sum(count_in_span(t0, t1, phase, self.period) for phase in self._phases())
+
+    def _kinks(self, t0: float, t1: float) -> np.ndarray:
+        phases = self._phases()
         if not phases or t1 < t0:
             return np.empty(0)
         period = self.period
-        first, last = np.floor(t0 / period), np.ceil(t1 / period)
+        with np.errstate(over="ignore"):
+            first, last = np.floor(t0 / period), np.ceil(t1 / period)
+        if not (np.isfinite(first) and np.isfinite(last)):
+            raise InvalidInputError(
+                "period",
+                period,
+                "times within about 1e308 periods of t = 0",
+                problem=f"t / period overflows for t in [{t0!r}, {t1!r}] with",
+            )
+        # Each period adds len(phases) candidates: refuse before listing 10^10 of them.
+        candidates = (last - first + 1.0) * len(phases)
+        check_memory(
+            "period",
+            period,
+            _KINK_BYTES * candidates,
+            "a longer period or a shorter time span (kink_count() counts them cheaply)",
+        )
         cycles = np.arange(first, last + 1.0) * period
         times = (cycles[:, np.newaxis] + np.array(phases)[np.newaxis, :]).ravel()
         return times[(times >= t0) & (times <= t1)]

@@ -12,10 +12,10 @@ from dataclasses import fields
 from typing import Any
 
 from .._errors import InvalidInputError
-from .._validation import Rejected
+from .._validation import Rejected, one_line
 from ._base import Affine, Signal, Sum
 from ._profiles import Cubic, Quintic, Trapezoidal
-from ._repeating import RepeatingSequence
+from ._repeating import MAX_TABLE_POINTS, RepeatingSequence
 from ._sources import Constant, Ramp, Sine, Step
 
 __all__ = ["signal_from_dict", "SIGNAL_TYPES", "MAX_TABLE_POINTS", "MAX_SIGNAL_DEPTH"]
@@ -37,9 +37,6 @@ SIGNAL_TYPES: dict[str, type[Signal]] = {
     )
 }
 
-#: Most points in one Repeating Sequence table read from a dict (and so from a file).
-MAX_TABLE_POINTS = 10_000
-
 #: Deepest nesting of Affine/Sum read from a dict; also the most terms of one Sum.
 MAX_SIGNAL_DEPTH = 16
 MAX_SUM_TERMS = 64
@@ -57,17 +54,19 @@ def _number(value: Any, field: str) -> float:
     # A bool is an int in Python but never a number in a signal (true/false in JSON).
     if isinstance(value, bool) or not isinstance(value, (int, float)):
         problem = f"expected a number, got {type(value).__name__}"
-        raise InvalidInputError(field, value, "a finite number", problem=problem)
+        raise InvalidInputError(field, one_line(value), "a finite number", problem=problem)
     try:
         return float(value)
-    except OverflowError:
-        raise InvalidInputError(field, value, "a finite number", problem="too large:") from None
+    except OverflowError:  # an int of 309 digits or more; it may be too long to print
+        raise InvalidInputError(
+            field, one_line(value), "a finite number", problem="too large:"
+        ) from None
 
 
 def _table(value: Any, field: str) -> list[float]:
     allowed = f"a list of at most {MAX_TABLE_POINTS} numbers"
     if not isinstance(value, (list, tuple)):
-        raise InvalidInputError(field, value, allowed, problem="not a list:")
+        raise InvalidInputError(field, one_line(value), allowed, problem="not a list:")
     if len(value) > MAX_TABLE_POINTS:
         raise InvalidInputError(
             field, f"<{len(value)} entries>", allowed, problem="table too long:"
@@ -119,11 +118,13 @@ def signal_from_dict(data: Any, field: str = "signal", *, _depth: int = 0) -> Si
             problem="nested too deeply:",
         )
     if not isinstance(data, Mapping):
-        raise InvalidInputError(field, data, "a dict with a 'type' key", problem="not a dict:")
+        raise InvalidInputError(
+            field, one_line(data), "a dict with a 'type' key", problem="not a dict:"
+        )
     kind = data.get("type")
     if not isinstance(kind, str) or kind not in SIGNAL_TYPES:
         raise InvalidInputError(
-            f"{field}.type", kind, ", ".join(SIGNAL_TYPES), problem="unknown signal type"
+            f"{field}.type", one_line(kind), ", ".join(SIGNAL_TYPES), problem="unknown signal type"
         )
     cls = SIGNAL_TYPES[kind]
     names = _parameters(cls)
@@ -163,7 +164,7 @@ def signal_from_dict(data: Any, field: str = "signal", *, _depth: int = 0) -> Si
 def _terms(raw: Any, path: str, depth: int) -> tuple[Signal, ...]:
     allowed = f"a list of 1 to {MAX_SUM_TERMS} signal dicts"
     if not isinstance(raw, (list, tuple)) or not raw:
-        raise InvalidInputError(path, raw, allowed, problem="not a non-empty list:")
+        raise InvalidInputError(path, one_line(raw), allowed, problem="not a non-empty list:")
     if len(raw) > MAX_SUM_TERMS:
         raise InvalidInputError(path, f"<{len(raw)} terms>", allowed, problem="too many terms:")
     return tuple(signal_from_dict(t, f"{path}[{i}]", _depth=depth + 1) for i, t in enumerate(raw))

@@ -3,12 +3,13 @@
 from __future__ import annotations
 
 from dataclasses import dataclass
+from typing import Any
 
 import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number
-from ._base import Signal
+from ._base import MAX_RATE, Signal
 
 __all__ = ["Constant", "Step", "Ramp", "Sine"]
 
@@ -172,10 +173,15 @@ class Sine(Signal):
     phase : float
         Phase (radians).
 
+    The peak velocity ``|A|·ω`` and acceleration ``|A|·ω²`` (``ω = 2π·frequency``) must
+    stay below ``1e306`` (:data:`~robotconf.signals.MAX_RATE`), and ``|bias| + |A|``
+    finite; so at amplitude 1 the frequency may reach about 1.6e152 Hz.
+
     Raises
     ------
     InvalidInputError
-        For a negative frequency or a non-finite parameter.
+        For a negative or too high frequency, a non-finite parameter, or a bias and
+        amplitude whose sum overflows; when evaluated, ``frequency`` if ``ω·t`` overflows.
 
     Examples
     --------
@@ -199,6 +205,23 @@ class Sine(Signal):
             raise InvalidInputError(
                 "frequency", self.frequency, "a frequency ≥ 0 in Hz", problem="must be ≥ 0, got"
             )
+        amplitude, w = abs(self.amplitude), 2.0 * np.pi * self.frequency
+        if not (amplitude * w <= MAX_RATE and amplitude * w * w <= MAX_RATE):
+            top = MAX_RATE / max(amplitude, 1e-300)
+            highest = min(top, top**0.5) / (2.0 * np.pi)
+            raise InvalidInputError(
+                "frequency",
+                self.frequency,
+                f"a frequency ≤ {highest:.3g} Hz at amplitude {self.amplitude!r}",
+                problem="too high (the velocity or acceleration overflows):",
+            )
+        if not np.isfinite(abs(self.bias) + amplitude):
+            raise InvalidInputError(
+                "bias",
+                self.bias,
+                "a bias and amplitude whose sum is finite",
+                problem=f"|bias| + |amplitude| overflows with amplitude {self.amplitude!r} and",
+            )
 
     def __repr__(self) -> str:
         return _repr(self, {"amplitude": 1.0, "bias": 0.0, "frequency": 1.0, "phase": 0.0})
@@ -207,6 +230,10 @@ class Sine(Signal):
     def angular_frequency(self) -> float:
         """``2π · frequency`` (rad/s)."""
         return 2.0 * np.pi * self.frequency
+
+    def _culprit(self, quantity: str, t: float) -> tuple[str, Any]:
+        # Construction bounds the amplitudes, so only the phase ω·t + φ can overflow.
+        return ("frequency", self.frequency)
 
     def _value(self, t: np.ndarray) -> np.ndarray:
         return self.bias + self.amplitude * np.sin(self.angular_frequency * t + self.phase)

@@ -8,6 +8,7 @@ Grammar (no ``eval``: every number goes through ``float`` or the ``pi`` pattern 
     item     := key "=" number | number         (a bare number continues the previous key's
                                                  list, or is the only parameter's value)
     number   := float (1, -0.5, 2e-3) | [sign][factor][*]pi[/divisor] (pi/2, -2*pi, 0.5pi)
+                of at most MAX_NUMBER_CHARS (40) ASCII characters
 
 Kinds and their parameters (Simulink's blocks; see :mod:`robotconf.signals`)::
 
@@ -20,6 +21,11 @@ Kinds and their parameters (Simulink's blocks; see :mod:`robotconf.signals`)::
     trapezoidal          start, end, duration, start_time, accel_fraction
 
 ``repeating`` alone is Simulink's default sawtooth (times 0, 2; values 0, 2).
+
+Parsing takes time linear in the length of the text: a spec is at most
+:data:`MAX_SPEC_LENGTH` characters, a number at most :data:`MAX_NUMBER_CHARS` (checked
+before any pattern runs), and the number patterns never backtrack more than a step
+(``\\d+(\\.\\d*)?`` instead of the ambiguous ``\\d+\\.?\\d*``).
 """
 
 from __future__ import annotations
@@ -30,13 +36,25 @@ import re
 from typing import Any
 
 from .._errors import InvalidInputError
+from .._validation import one_line
 from ._base import Signal
 from ._serialize import SIGNAL_TYPES
 
-__all__ = ["parse_signal_spec", "parse_signal", "SIGNAL_KINDS", "SPEC_HELP", "MAX_SPEC_LENGTH"]
+__all__ = [
+    "parse_signal_spec",
+    "parse_signal",
+    "SIGNAL_KINDS",
+    "SPEC_HELP",
+    "MAX_SPEC_LENGTH",
+    "MAX_NUMBER_CHARS",
+]
 
 #: Longest spec accepted (characters): a command line, not a data file.
 MAX_SPEC_LENGTH = 10_000
+
+#: Longest number (characters, with sign, exponent or pi): 17 significant digits give
+#: every float, so 40 leaves room for ``-1.2345678901234567e-300*pi/2``-like forms.
+MAX_NUMBER_CHARS = 40
 
 
 def _kind(name: str) -> tuple[type[Signal], tuple[str, ...], tuple[str, ...]]:
@@ -72,16 +90,33 @@ SPEC_HELP = (
     "previous key's list (times=0,1,2). Numbers may use pi: pi/2, -2*pi."
 )
 
-_NAME = re.compile(r"q[1-9][0-9]{0,3}")
+_NAME = re.compile(r"q[1-9][0-9]{0,3}", re.ASCII)
+# Unambiguous pieces (each digit can belong to one quantifier only), ASCII digits only:
+# Python's \d also matches Arabic-Indic and other digits, which float() would accept.
+_DECIMAL = r"(?:[0-9]+(?:\.[0-9]*)?|\.[0-9]+)"
 _PI = re.compile(
-    r"([+-]?)(?:((?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?)\s*\*?\s*)?pi(?:\s*/\s*((?:\d+\.?\d*|\.\d+)))?"
+    rf"([+-]?)(?:({_DECIMAL}(?:e[+-]?[0-9]+)?)[ \t]*\*?[ \t]*)?pi(?:[ \t]*/[ \t]*({_DECIMAL}))?",
+    re.ASCII,
 )
-_FLOAT = re.compile(r"[+-]?(?:\d+\.?\d*|\.\d+)(?:e[+-]?\d+)?")
+_FLOAT = re.compile(rf"[+-]?{_DECIMAL}(?:e[+-]?[0-9]+)?", re.ASCII)
+
+
+def _shown(token: str) -> str:
+    """A token for a message: quoted, and cut short when long."""
+    text = token.strip()
+    return repr(text if len(text) <= 24 else text[:20] + "…")
 
 
 def _number(token: str, spec: str) -> float:
     text = token.strip().lower()
     allowed = "a finite number such as 0.5, -2, 1e-3, pi/2 or 2*pi"
+    if len(text) > MAX_NUMBER_CHARS:
+        raise InvalidInputError(
+            "signal",
+            spec,
+            f"{allowed}, of at most {MAX_NUMBER_CHARS} characters",
+            problem=f"the number {_shown(token)} ({len(text)} characters) is too long in",
+        )
     if _FLOAT.fullmatch(text):
         value = float(text)
     elif match := _PI.fullmatch(text):
@@ -94,11 +129,11 @@ def _number(token: str, spec: str) -> float:
         value = -value if sign == "-" else value
     else:
         raise InvalidInputError(
-            "signal", spec, allowed, problem=f"{token.strip()!r} is not a number in"
+            "signal", spec, allowed, problem=f"{_shown(token)} is not a number in"
         )
     if not math.isfinite(value):
         raise InvalidInputError(
-            "signal", spec, allowed, problem=f"{token.strip()!r} is not finite in"
+            "signal", spec, allowed, problem=f"{_shown(token)} is not finite in"
         )
     return value
 
@@ -162,8 +197,9 @@ def parse_signal(text: str, spec: str | None = None) -> Signal:
     Raises
     ------
     InvalidInputError
-        For an unknown kind or parameter, a malformed number, NaN or infinity, a repeated
-        parameter, or parameters the signal itself refuses (e.g. times that decrease).
+        For text longer than :data:`MAX_SPEC_LENGTH`, an unknown kind or parameter, a
+        malformed or too long number, NaN or infinity, a repeated parameter, or
+        parameters the signal itself refuses (e.g. times that decrease).
 
     Examples
     --------
@@ -175,6 +211,15 @@ def parse_signal(text: str, spec: str | None = None) -> Signal:
     1.5707963267948966
     """
     spec = text if spec is None else spec
+    if not isinstance(text, str):
+        raise InvalidInputError("signal", one_line(text), "KIND[:ARGS] text", problem="not text:")
+    if len(text) > MAX_SPEC_LENGTH:
+        raise InvalidInputError(
+            "signal",
+            spec,
+            f"KIND[:ARGS] text of at most {MAX_SPEC_LENGTH} characters",
+            problem=f"longer than {MAX_SPEC_LENGTH} characters:",
+        )
     kind_text, has_args, args = text.partition(":")
     key = kind_text.strip().lower()
     kind = _KIND_ALIASES.get(key, key)
@@ -227,7 +272,7 @@ def parse_signal_spec(spec: Any) -> tuple[str, Signal]:
     """
     allowed = "NAME=KIND[:ARGS] such as q3=repeating:times=0,2;values=0,2"
     if not isinstance(spec, str):
-        raise InvalidInputError("signal", spec, allowed, problem="not text:")
+        raise InvalidInputError("signal", one_line(spec), allowed, problem="not text:")
     if len(spec) > MAX_SPEC_LENGTH:
         raise InvalidInputError(
             "signal", spec, allowed, problem=f"longer than {MAX_SPEC_LENGTH} characters:"
