@@ -163,7 +163,8 @@ def test_excel_refuses_more_rows_than_a_sheet_holds(tmp_path, monkeypatch) -> No
     import importlib.util
 
     monkeypatch.setattr(importlib.util, "find_spec", lambda name, *a: object())
-    motion = simulate(paper_robot(), {}, t_end=EXCEL_MAX_ROWS * 1e-3, dt=1e-3)
+    # One slide keeps the million-sample run near 0.7 GB (the paper robot needs twice that).
+    motion = simulate(rc.Robot([rc.Module("Tx")]), {}, t_end=EXCEL_MAX_ROWS * 1e-3, dt=1e-3)
     with pytest.raises(ValueError, match=r"samples do not fit in a sheet.*use to_csv"):
         motion.to_excel(tmp_path / "big.xlsx")
 

@@ -1,8 +1,11 @@
 """Motion: drive coordinates with signals and get the DVA of every frame and the EE.
 
 Simulation
-    :func:`simulate`, :class:`Motion`, :class:`SimulationSettings`, :data:`METHODS`,
-    :data:`MAX_TIME_SAMPLES`, :data:`MAX_SAMPLE_POINTS`
+    :func:`simulate`, :class:`Motion`, :class:`SimulationSettings`, :data:`METHODS`
+Limits of a run (docs/conventions.md, "Limits of a run")
+    :data:`MAX_TIME_SAMPLES`, :data:`MAX_SAMPLE_POINTS`, :data:`MIN_TIME_STEP`,
+    :data:`MAX_TIME`, :data:`TIME_RESOLUTION`; the memory budget is
+    :func:`robotconf.set_memory_budget`
 Displacement, velocity, acceleration (numpy)
     :data:`QUANTITIES`, :func:`analytic_dva`, :func:`numeric_dva`,
     :func:`first_derivative`, :func:`second_derivative`
@@ -29,6 +32,7 @@ from ._table import (
     motion_to_csv,
     motion_to_excel,
 )
+from ._time_grid import MAX_TIME, MIN_TIME_STEP, TIME_RESOLUTION
 
 __all__ = [
     # simulation
@@ -38,6 +42,9 @@ __all__ = [
     "METHODS",
     "MAX_TIME_SAMPLES",
     "MAX_SAMPLE_POINTS",
+    "MIN_TIME_STEP",
+    "MAX_TIME",
+    "TIME_RESOLUTION",
     # DVA
     "QUANTITIES",
     "analytic_dva",

@@ -10,6 +10,7 @@ from .._errors import InvalidInputError
 from ..kinematics import point_names
 from ..signals import Signal
 from ._dva import QUANTITIES
+from ._memory import check_kink_memory
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -130,8 +131,17 @@ class Motion:
         return self._data.reshape(-1, self.t.size)
 
     def kinks(self) -> dict[str, np.ndarray]:
-        """Per driven coordinate: times where its value or velocity jumps (see plot notes)."""
+        """Per driven coordinate: times where its value or velocity jumps (see plot notes).
+
+        Raises
+        ------
+        InvalidInputError
+            Named ``signals[q<i>]`` when listing the kinks would exceed the memory budget
+            (a repeating signal with a tiny period over a long run).
+        """
         t0, t1 = float(self.t[0]), float(self.t[-1])
+        # Counted from the periods first: a 1 ns period over a long run has billions.
+        check_kink_memory(self.signals, t0, t1)
         found = {name: s.kinks(t0, t1) for name, s in self.signals.items()}
         return {name: times for name, times in found.items() if times.size}
 
@@ -141,7 +151,8 @@ class Motion:
     def table(self) -> pd.DataFrame:
         """pandas DataFrame indexed by time (s), columns (point, quantity, axis).
 
-        Built once and cached; copy it before editing.
+        Built once and cached; copy it before editing. Refused (``InvalidInputError``
+        named ``table``) when it would exceed the memory budget.
         """
         if self._table is None:
             from ._table import motion_table
@@ -161,11 +172,12 @@ class Motion:
 
         return compare_motions(self, other)
 
-    def to_csv(self, path: Any, **kwargs: Any) -> None:
-        """Write :attr:`table` as CSV (see ``_motion_table.motion_to_csv``)."""
+    def to_csv(self, path: Any = None, **kwargs: Any) -> str | None:
+        """Write :attr:`table` as CSV, or return the text for ``path=None`` (see
+        :func:`~robotconf.motion.motion_to_csv`)."""
         from ._table import motion_to_csv
 
-        motion_to_csv(self, path, **kwargs)
+        return motion_to_csv(self, path, **kwargs)
 
     def to_excel(self, path: Any, **kwargs: Any) -> None:
         """Write :attr:`table` to an .xlsx file (needs openpyxl)."""

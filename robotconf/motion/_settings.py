@@ -8,6 +8,7 @@ apply wherever a run is described.
 from __future__ import annotations
 
 import dataclasses
+import datetime
 from dataclasses import dataclass
 from typing import Any
 
@@ -15,17 +16,18 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number, check_integer, check_json_number, check_json_object
+from ._time_grid import (
+    DEFAULT_TIME_STEP,
+    MAX_TIME_SAMPLES,
+    check_time_bounds,
+    sample_count,
+    time_grid,
+)
 
 __all__ = ["SimulationSettings", "METHODS", "MAX_TIME_SAMPLES", "MAX_SAMPLE_POINTS"]
 
 #: The two ways of differentiating (docs/conventions.md, "Motion").
 METHODS = ("analytic", "numeric")
-
-#: Ceiling on time samples, ``(t_end − t0)/dt + 1``, wherever settings are made (files,
-#: :func:`~robotconf.motion.simulate`, the report command, the panel). 10⁷ samples are
-#: 2.8 hours at 1 ms, far beyond a teaching run, and keep even a one-module robot's
-#: results (2 points × 120 bytes per sample) near 2.4 GB.
-MAX_TIME_SAMPLES = 10_000_000
 
 #: Default ceiling on samples × points of one run (points = modules + EE). Each
 #: sample-point holds 15 floats (120 bytes), so the default allows about 6 GB of results;
@@ -35,27 +37,43 @@ MAX_SAMPLE_POINTS = 50_000_000
 _FIELDS = ("t_end", "dt", "t0", "method")
 _REQUIRED = {"t_end": True, "dt": False, "t0": False, "method": False}
 _METHOD_ALLOWED = "'analytic' (exact chain rule) or 'numeric' (finite differences)"
+_SECONDS = "a finite real number of seconds"
 
 
 def _check_method(method: Any) -> str:
-    if not isinstance(method, str) or method.strip().lower() not in METHODS:
+    # numpy text (np.str_) is a str and welcome; bytes, numbers and arrays are not text.
+    if not isinstance(method, str):
+        raise InvalidInputError("method", method, _METHOD_ALLOWED, problem="expected text, got")
+    if method.strip().lower() not in METHODS:
         raise InvalidInputError("method", method, _METHOD_ALLOWED, problem="unknown method")
-    return method.strip().lower()
+    return str(method.strip().lower())
 
 
-def _sample_count(t0: float, t_end: float, dt: float) -> int:
-    steps = (t_end - t0) / dt
-    # ``not <`` also catches an infinite quotient (a tiny dt), before int() could overflow.
-    if not steps < MAX_TIME_SAMPLES:
+def _seconds(value: Any, field: str) -> float:
+    """A time setting as a finite float of seconds.
+
+    Dates, complex numbers, booleans and numpy text (whose dtype float() would convert
+    or silently truncate) are refused by name before :func:`check_finite_number`.
+    """
+    kind = getattr(getattr(value, "dtype", None), "kind", None)
+    if isinstance(value, (datetime.date, datetime.time, datetime.timedelta)) or kind in ("M", "m"):
         raise InvalidInputError(
-            "dt",
-            dt,
-            f"at most {MAX_TIME_SAMPLES:,} time samples ((t_end − t0)/dt + 1 = {steps + 1:.4g} "
-            "here): increase dt or shorten t_end − t0",
-            problem="too many samples at",
+            field,
+            value,
+            "a plain number of seconds (for a duration, its .total_seconds())",
+            problem="a date or duration is not a number of seconds:",
         )
-    # Round-off in (t_end − t0)/dt must not drop the last sample (0.3/0.1 = 2.9999…).
-    return int(np.floor(steps + max(1e-9, 8.0 * np.finfo(float).eps * steps))) + 1
+    if isinstance(value, complex) or kind == "c":
+        raise InvalidInputError(field, value, _SECONDS, problem="a complex number is not a time:")
+    if kind == "b":
+        raise InvalidInputError(field, value, _SECONDS, problem="a boolean is not a number:")
+    if kind in ("U", "S"):
+        raise InvalidInputError(field, value, _SECONDS, problem="text is not a number:")
+    if kind not in (None, "i", "u", "f"):
+        raise InvalidInputError(
+            field, value, _SECONDS, problem=f"a numpy {value.dtype} value is not a number:"
+        )
+    return check_finite_number(value, field)
 
 
 @dataclass(frozen=True)
@@ -66,20 +84,24 @@ class SimulationSettings:
     ----------
     t_end : float
         Last sample time (s), included when ``t_end − t0`` is a multiple of ``dt``;
-        later than ``t0``.
+        later than ``t0``; ``|t_end| ≤`` :data:`~robotconf.motion.MAX_TIME` (10⁹ s).
     dt : float
-        Time step (s), > 0.
+        Time step (s), from :data:`~robotconf.motion.MIN_TIME_STEP` (1 ns) to 10⁹ s, and
+        at least :data:`~robotconf.motion.TIME_RESOLUTION` × max(|t0|, |t_end|).
     t0 : float
-        First sample time (s).
+        First sample time (s), ``|t0| ≤`` 10⁹ s.
     method : {"analytic", "numeric"}
         How velocities and accelerations are found (any case; stored in lower case).
+
+    Times are real numbers of seconds: booleans, complex numbers, dates and durations
+    (``datetime``, ``numpy.datetime64``) and text are refused.
 
     Raises
     ------
     InvalidInputError
-        Naming the field: a value that is not a finite number, ``dt ≤ 0``,
-        ``t_end ≤ t0``, an unknown method, or more than :data:`MAX_TIME_SAMPLES`
-        samples (named ``dt``).
+        Naming the field: a value that is not a finite real number, a time or step
+        outside the limits above, ``t_end ≤ t0``, an unknown method, or more than
+        :data:`MAX_TIME_SAMPLES` samples (named ``dt``).
 
     Examples
     --------
@@ -99,24 +121,18 @@ class SimulationSettings:
     """
 
     t_end: float
-    dt: float = 1e-3
+    dt: float = DEFAULT_TIME_STEP
     t0: float = 0.0
     method: str = "analytic"
 
     def __post_init__(self) -> None:
-        t_end = check_finite_number(self.t_end, "t_end")
-        dt = check_finite_number(self.dt, "dt")
-        t0 = check_finite_number(self.t0, "t0")
-        if dt <= 0.0:
-            raise InvalidInputError(
-                "dt", dt, "a time step > 0 (s)", problem="must be positive, got"
-            )
-        if t_end <= t0:
-            raise InvalidInputError(
-                "t_end", t_end, f"a time after t0 = {t0} s", problem="must be later than t0, got"
-            )
+        t_end = _seconds(self.t_end, "t_end")
+        dt = _seconds(self.dt, "dt")
+        t0 = _seconds(self.t0, "t0")
+        # Bounds first: after them no time arithmetic can overflow or lose the step.
+        check_time_bounds(t_end, dt, t0)
         method = _check_method(self.method)
-        _sample_count(t0, t_end, dt)
+        sample_count(t0, t_end, dt)
         for name, value in (("t_end", t_end), ("dt", dt), ("t0", t0), ("method", method)):
             object.__setattr__(self, name, value)
 
@@ -127,10 +143,10 @@ class SimulationSettings:
         >>> SimulationSettings(0.3, dt=0.1).samples  # 0.3/0.1 = 2.9999… in floats
         4
         """
-        return _sample_count(self.t0, self.t_end, self.dt)
+        return sample_count(self.t0, self.t_end, self.dt)
 
-    def time_grid(self, points: int = 1, limit: int = MAX_SAMPLE_POINTS) -> np.ndarray:
-        """The sample times ``t0, t0 + dt, …`` (s), refusing runs too big for memory.
+    def check_samples(self, points: int = 1, limit: int = MAX_SAMPLE_POINTS) -> int:
+        """The number of samples, refusing more than ``limit`` samples × points.
 
         Parameters
         ----------
@@ -138,6 +154,45 @@ class SimulationSettings:
             Points computed at every sample (modules + EE for a robot), ≥ 1.
         limit : int
             Largest allowed samples × points (see :data:`MAX_SAMPLE_POINTS`).
+
+        Returns
+        -------
+        int
+
+        Raises
+        ------
+        InvalidInputError
+            Named ``dt`` when samples × points exceeds ``limit``.
+
+        Examples
+        --------
+        >>> SimulationSettings(10.0).check_samples(points=4)
+        10001
+        >>> SimulationSettings(10.0).check_samples(points=4, limit=40_000)
+        Traceback (most recent call last):
+        ...
+        robotconf.InvalidInputError: dt: 10001 samples × 4 points = 4e+04 is too many at ...
+        """
+        points = check_integer(points, "points", 1)
+        limit = check_integer(limit, "max_sample_points")
+        count = self.samples
+        if count * points > limit:
+            raise InvalidInputError(
+                "dt",
+                self.dt,
+                f"at most {limit:.3g} samples × points: increase dt, shorten t_end − t0, or "
+                "pass a larger max_sample_points if you have the memory (120 bytes each)",
+                problem=f"{count} samples × {points} points = {count * points:.3g} is too many at",
+            )
+        return count
+
+    def time_grid(self, points: int = 1, limit: int = MAX_SAMPLE_POINTS) -> np.ndarray:
+        """The sample times ``t0, t0 + dt, …`` (s), refusing runs too big for memory.
+
+        Parameters
+        ----------
+        points, limit : int
+            As for :meth:`check_samples`.
 
         Returns
         -------
@@ -157,18 +212,7 @@ class SimulationSettings:
         ...
         robotconf.InvalidInputError: dt: 10001 samples × 4 points = 4e+04 is too many at ...
         """
-        points = check_integer(points, "points", 1)
-        limit = check_integer(limit, "max_sample_points")
-        count = self.samples
-        if count * points > limit:
-            raise InvalidInputError(
-                "dt",
-                self.dt,
-                f"at most {limit:.3g} samples × points: increase dt, shorten t_end − t0, or "
-                "pass a larger max_sample_points if you have the memory (120 bytes each)",
-                problem=f"{count} samples × {points} points = {count * points:.3g} is too many at",
-            )
-        return self.t0 + self.dt * np.arange(count)
+        return time_grid(self.t0, self.dt, self.check_samples(points, limit))
 
     def with_changes(self, **changes: Any) -> SimulationSettings:
         """A copy with some fields replaced, validated as a whole.

@@ -9,9 +9,12 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number
+from ..kinematics import point_names
 from ..signals import Constant, Signal
 from ._dva import analytic_dva, first_derivative, numeric_dva, second_derivative
+from ._memory import check_simulation_memory
 from ._motion import Motion
+from ._overflow import check_coordinates_finite, check_results_finite
 from ._settings import MAX_SAMPLE_POINTS, SimulationSettings
 
 if TYPE_CHECKING:
@@ -87,8 +90,11 @@ def simulate(
         Refuse runs with more samples × points (points = modules + EE); default
         :data:`MAX_SAMPLE_POINTS`. Samples alone never exceed :data:`MAX_TIME_SAMPLES`.
 
-    The time settings are checked by :class:`SimulationSettings`; with one at hand, call
-    ``simulate(robot, signals, **settings.to_dict())``.
+    The time settings are checked by :class:`SimulationSettings` (their limits are in
+    docs/conventions.md, "Limits of a run"); with one at hand, call
+    ``simulate(robot, signals, **settings.to_dict())``. Before allocating anything the
+    peak memory is estimated (:mod:`robotconf.motion._memory`) and checked against
+    :func:`robotconf.memory_budget`.
 
     Returns
     -------
@@ -97,9 +103,11 @@ def simulate(
     Raises
     ------
     InvalidInputError
-        Naming the field: ``dt ≤ 0``, ``t_end ≤ t0``, too many samples (or samples ×
-        points), an unknown method, a signal for a coordinate that does not exist, or
-        fewer than 4 samples with ``numeric``.
+        Naming the field: a time setting outside its limits, ``t_end ≤ t0``, too many
+        samples (or samples × points), a run needing more memory than the budget (named
+        ``dt`` or ``t_end``), an unknown method, a signal for a coordinate that does not
+        exist, fewer than 4 samples with ``numeric``, or results that overflow to inf or
+        NaN (named ``signals[q<i>]``, ``signals`` or ``robot``).
 
     Examples
     --------
@@ -122,23 +130,45 @@ def simulate(
     settings = SimulationSettings(t_end, dt, t0, method)
     chosen = _check_signals(robot, signals)
     limit = int(check_finite_number(max_sample_points, "max_sample_points"))
+    settings.check_samples(robot.n + 1, limit)
+    check_simulation_memory(settings, robot.n, chosen.values())
     t = settings.time_grid(robot.n + 1, limit)
-    method, step = settings.method, settings.dt
+    # Overflow is detected on the results and refused with a message naming its cause,
+    # so numpy's own warnings about it would only be noise.
+    with np.errstate(over="ignore", invalid="ignore"):
+        return _run(robot, chosen, t, settings.method, settings.dt)
+
+
+def _run(
+    robot: Robot, chosen: dict[int, Signal], t: np.ndarray, method: str, step: float
+) -> Motion:
+    """Sample the signals on ``t`` and compute the DVA, refusing overflowed results."""
     n, samples = robot.n, t.size
+    names = robot.coordinate_names
     q = np.empty((n, samples))
     qd = np.zeros((n, samples))
     qdd = np.zeros((n, samples))
     q[:] = robot.q[:, np.newaxis]
     for i, signal in chosen.items():
-        q[i] = signal.value(t)
-        if method == "analytic":
-            qd[i] = signal.velocity(t)
-            qdd[i] = signal.acceleration(t)
+        try:
+            q[i] = signal.value(t)
+            if method == "analytic":
+                qd[i] = signal.velocity(t)
+                qdd[i] = signal.acceleration(t)
+        except InvalidInputError as error:
+            # A signal names its own parameter; say which coordinate it drives, too.
+            raise error.within(f"signals[{names[i]}]") from None
+    rows = {"values": q, "velocities": qd, "accelerations": qdd}
     if method == "analytic":
+        check_coordinates_finite(rows, chosen, names)
         data = analytic_dva(robot, q.T, qd.T, qdd.T)
     else:
+        check_coordinates_finite({"values": q}, chosen, names)
         data = numeric_dva(robot, q.T, step)
         qd = first_derivative(q, step)
         qdd = second_derivative(q, step)
-    names = robot.coordinate_names
-    return Motion(robot, t, q, qd, qdd, data, method, {names[i]: s for i, s in chosen.items()})
+        rates = {"velocities": qd, "accelerations": qdd}
+        check_coordinates_finite(rates, chosen, names, finite_differences=True)
+    driven = {names[i]: s for i, s in chosen.items()}
+    check_results_finite(data, robot, point_names(robot), driven)
+    return Motion(robot, t, q, qd, qdd, data, method, driven)

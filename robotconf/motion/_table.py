@@ -11,8 +11,10 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
+from .._budget import check_memory
 from .._errors import InvalidInputError
 from ._dva import QUANTITIES
+from ._memory import csv_bytes, excel_bytes, table_bytes
 
 if TYPE_CHECKING:
     import pandas as pd
@@ -27,6 +29,21 @@ TIME_LABEL = "time (s)"
 STATS = ("max", "t_max", "min", "t_min", "peak_to_peak", "mean", "median", "rms")
 #: Excel's row limit (one header row per column level is added).
 EXCEL_MAX_ROWS = 1_048_576
+
+
+_FEWER_SAMPLES = "a motion with fewer samples (a larger dt or a shorter run)"
+
+
+def _size(motion: Motion) -> tuple[int, int, str]:
+    """Rows, data columns and both in words, for the memory checks."""
+    rows, columns = motion.t.size, len(motion.points) * len(QUANTITIES) * 3
+    return rows, columns, f"{rows} samples × {columns} columns"
+
+
+def _unbuilt_table_bytes(motion: Motion) -> float:
+    """Bytes :attr:`Motion.table` still has to allocate (0 once it is cached)."""
+    rows, columns, _ = _size(motion)
+    return 0.0 if motion._table is not None else table_bytes(rows, columns)
 
 
 def _columns(motion: Motion) -> pd.MultiIndex:
@@ -64,9 +81,21 @@ def motion_table(motion: Motion) -> pd.DataFrame:
     [2.0, 2.0, 2.0]
     >>> table.shape
     (3, 30)
+
+    Raises
+    ------
+    InvalidInputError
+        Named ``table`` when the DataFrame would exceed the memory budget.
     """
     import pandas as pd
 
+    rows, columns, size = _size(motion)
+    check_memory(
+        "table",
+        size,
+        table_bytes(rows, columns),
+        f"{_FEWER_SAMPLES}, or the raw arrays of Motion.columns() (no copy)",
+    )
     index = pd.Index(motion.t, name=TIME_LABEL)
     # The (C, T) block transposed is exactly pandas' internal layout: one copy, no shuffle.
     return pd.DataFrame(motion.columns().T, index=index, columns=_columns(motion), copy=True)
@@ -99,6 +128,9 @@ def motion_stats(motion: Motion) -> pd.DataFrame:
     """
     import pandas as pd
 
+    samples, columns, size = _size(motion)
+    # The median sorts a copy of every series.
+    check_memory("stats", size, table_bytes(samples, columns), _FEWER_SAMPLES)
     data = motion.columns()
     t = motion.t
     high, low = data.argmax(axis=1), data.argmin(axis=1)
@@ -162,6 +194,9 @@ def compare_motions(first: Motion, second: Motion) -> pd.DataFrame:
             "a motion with the same t0, t_end and dt",
             problem="different time grids:",
         )
+    rows, columns, size = _size(first)
+    nbytes = _unbuilt_table_bytes(first) + _unbuilt_table_bytes(second)
+    check_memory("other", size, nbytes + table_bytes(rows, columns), _FEWER_SAMPLES)
     return first.table - second.table
 
 
@@ -171,22 +206,45 @@ def _flat(table: pd.DataFrame) -> pd.DataFrame:
     return flat
 
 
-def motion_to_csv(motion: Motion, path: Any, *, flat: bool = False, **kwargs: Any) -> None:
+def motion_to_csv(
+    motion: Motion, path: Any = None, *, flat: bool = False, **kwargs: Any
+) -> str | None:
     """Write the table as CSV.
 
     Parameters
     ----------
     motion : Motion
-    path : str or path-like or file
+    path : str or path-like or file or None
+        Where to write; ``None`` returns the text instead (as pandas does).
     flat : bool
         ``False``: three header rows (point, quantity, axis); read back with
         ``pandas.read_csv(path, header=[0, 1, 2], index_col=0)``. ``True``: one header row
         with names such as ``EE_velocity_z`` (easier in a spreadsheet).
     **kwargs
         Passed to :meth:`pandas.DataFrame.to_csv`.
+
+    Returns
+    -------
+    str or None
+        The CSV text when ``path`` is ``None``.
+
+    Raises
+    ------
+    InvalidInputError
+        Named ``path`` when the table and the text would exceed the memory budget: a
+        file is written in chunks, while ``None`` or an ``io.StringIO`` holds it all.
     """
+    rows, columns, size = _size(motion)
+    nbytes = _unbuilt_table_bytes(motion) + csv_bytes(rows, columns, path, kwargs.get("chunksize"))
+    check_memory(
+        "path",
+        path,
+        nbytes,
+        f"a file path (written in chunks), or {_FEWER_SAMPLES}; the table is {size}",
+    )
     table = _flat(motion.table) if flat else motion.table
-    table.to_csv(path, **kwargs)
+    text: str | None = table.to_csv(path, **kwargs)
+    return text
 
 
 def motion_to_excel(motion: Motion, path: Any, *, flat: bool = False, **kwargs: Any) -> None:
@@ -206,7 +264,8 @@ def motion_to_excel(motion: Motion, path: Any, *, flat: bool = False, **kwargs: 
     ModuleNotFoundError
         If openpyxl is not installed; the message says how to install it.
     InvalidInputError
-        If the motion has more rows than an Excel sheet holds.
+        If the motion has more rows than an Excel sheet holds, or the workbook would
+        exceed the memory budget (openpyxl keeps every cell as an object, ~340 bytes).
     """
     if importlib.util.find_spec("openpyxl") is None:
         raise ModuleNotFoundError(
@@ -223,5 +282,12 @@ def motion_to_excel(motion: Motion, path: Any, *, flat: bool = False, **kwargs: 
             "or use to_csv",
             problem=f"{motion.t.size} samples do not fit in a sheet:",
         )
+    _, columns, size = _size(motion)
+    check_memory(
+        "path",
+        str(path),
+        _unbuilt_table_bytes(motion) + excel_bytes(motion.t.size, columns),
+        f"to_csv (written in chunks), or {_FEWER_SAMPLES}; the table is {size}",
+    )
     table = _flat(motion.table) if flat else motion.table
     table.to_excel(path, **kwargs)
