@@ -1,6 +1,7 @@
 # Two commands on a fresh machine: `make lab` opens the configurator notebook,
 # `make test` runs the whole suite. Both create .venv and (re)install the package with
-# its dev extra whenever pyproject.toml changes.
+# its dev and lab extras (JupyterLab itself is the `lab` extra) whenever pyproject.toml
+# changes.
 
 PYTHON ?= python3
 VENV ?= .venv
@@ -13,7 +14,7 @@ NOTEBOOK_DIRS := $(wildcard notebooks course)
 $(STAMP): pyproject.toml
 	test -x $(BIN)/python || $(PYTHON) -m venv $(VENV)
 	$(BIN)/python -m pip install --quiet --upgrade pip
-	$(BIN)/python -m pip install --quiet -e ".[dev]"
+	$(BIN)/python -m pip install --quiet -e ".[dev,lab]"
 	touch $(STAMP)
 
 venv: $(STAMP)
@@ -24,6 +25,17 @@ ROOT_FLAG := $(if $(filter 0,$(shell id -u)),--allow-root,)
 lab: $(STAMP)
 	$(BIN)/jupyter lab $(ROOT_FLAG) notebooks/configurator.ipynb
 
+# A third convenience, for students who don't code: the configurator alone in Voilà, on
+# http://127.0.0.1:$(APP_PORT) and offline. Voilà runs in app/ to read app/voila.json (its
+# settings, explained in docs/app.md); JUPYTER_PATH lets it find the app's template.
+APP_PORT ?= 8866
+
+.PHONY: app
+
+app: $(STAMP)
+	test -x $(BIN)/voila || $(BIN)/python -m pip install --quiet -e ".[app]"
+	cd app && JUPYTER_PATH=$(CURDIR)/app/jupyter $(abspath $(BIN))/voila configurator.ipynb --port=$(APP_PORT)
+
 lint: $(STAMP)
 	$(BIN)/ruff check .
 	$(BIN)/ruff format --check .
@@ -32,6 +44,20 @@ lint: $(STAMP)
 # One pytest run: unit tests, doctests of the package, and every notebook (nbmake).
 test: lint
 	MPLBACKEND=Agg ROBOTCONF_FAST=1 $(BIN)/python -m pytest --nbmake robotconf tests $(NOTEBOOK_DIRS)
+
+# A browser-only classroom: a JupyterLite site in dist/lite to publish as static files
+# (docs/lite.md). lite/build.py installs the site's build tools into their own venv.
+LITE_OUT ?= dist/lite
+
+.PHONY: lite test-lite
+
+lite: $(STAMP)
+	$(BIN)/python lite/build.py --out $(LITE_OUT)
+
+# Only the site's checks, against the site `make lite` just built (`make test` runs them
+# too, on a site it builds in a temporary folder).
+test-lite: lite
+	ROBOTCONF_LITE_SITE=$(abspath $(LITE_OUT)) $(BIN)/python -m pytest tests/test_lite.py tests/browser/test_lite_browser.py
 
 bench: $(STAMP)
 	for script in benchmarks/bench_*.py; do $(BIN)/python $$script || exit 1; done

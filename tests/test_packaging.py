@@ -2,7 +2,7 @@
 
 ``make lab`` and ``make test`` use an editable install, which reads every file straight from
 the source tree and so hides files the wheel leaves out (the scene's JavaScript, read at run
-time by :mod:`robotconf.scene._widget`, once was). These tests build a wheel from a copy of
+time by :mod:`robotconf.scene._assets`, once was). These tests build a wheel from a copy of
 the checkout, as a release would, and look inside it.
 
 - :func:`test_wheel_holds_every_package_file_and_the_console_script` runs everywhere and
@@ -57,6 +57,8 @@ text = path.read_text(encoding="utf-8")
 size = path.stat().st_size
 assert size > 500_000, f"{size} bytes: meshcat's viewer is not inlined"
 assert "<script src=" not in text, "the exported page loads a script from elsewhere"
+# meshcat's bundle is read as a file: its package (and its server stack) never runs.
+assert "meshcat" not in sys.modules and "zmq" not in sys.modules, "meshcat's package ran"
 print("smoke ok", module, size)
 """
 

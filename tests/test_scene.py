@@ -161,6 +161,17 @@ def test_scene_log_replays_compactly(scene: Scene) -> None:
     )
 
 
+def test_scene_log_keeps_every_packed_object(scene: Scene) -> None:
+    # Triads and point clouds travel packed; a replay (new view, reload, export) needs all.
+    scene.add_point_cloud("first", np.zeros((3, 3)))
+    scene.add_point_cloud("second", np.ones((3, 3)))
+    replay = RecordingChannel()
+    replay.send(scene._log.ops())
+    created = {c["path"] for c in replay.commands("set_object")}
+    assert {f"{ROOT}/clouds/first", f"{ROOT}/clouds/second"} <= created
+    assert created >= {f"{ROBOT_PATH}/{item.path}" for item in scene._drawing.items}
+
+
 def _transforms_from(ops) -> dict[str, np.ndarray]:  # type: ignore[no-untyped-def]
     channel = RecordingChannel()
     channel.send(ops)
@@ -242,12 +253,17 @@ def test_animation_tracks_follow_the_motion(scene: Scene, paper_robot: rc.Robot)
 
 
 def test_point_cloud_is_packed_and_validated(scene: Scene) -> None:
-    import umsgpack
+    import msgpack
 
-    scene.add_point_cloud("workspace", np.random.default_rng(1).random((20, 3)))
+    points = np.random.default_rng(1).random((20, 3))
+    scene.add_point_cloud("workspace", points)
     op = scene.channel.ops[-1]
-    command = umsgpack.unpackb(op.buffers[0])
+    command = msgpack.unpackb(op.buffers[0])
     assert command["type"] == "set_object" and command["path"].endswith("clouds/workspace")
+    position = command["object"]["geometries"][0]["data"]["attributes"]["position"]
+    assert position["array"].code == 0x17  # the viewer's Float32Array
+    sent = np.frombuffer(position["array"].data, dtype=np.float32).reshape(-1, 3)
+    np.testing.assert_allclose(sent, points, rtol=1e-6)
     with pytest.raises(rc.InvalidInputError, match="points"):
         scene.add_point_cloud("w", np.zeros((4, 2)))
     with pytest.raises(rc.InvalidInputError, match="color"):
@@ -266,6 +282,19 @@ def test_export_html_is_self_contained(scene: Scene, tmp_path) -> None:  # type:
     assert len(text) > 800_000  # meshcat's viewer is inlined
     log = text.split('id="robotconf-scene-log" type="application/json">')[1].split("</script>")[0]
     assert json.loads(log)["ops"]
+
+
+def test_viewer_bundle_comes_from_the_meshcat_package_or_says_how_to_install_it(
+    monkeypatch: pytest.MonkeyPatch,
+) -> None:
+    from robotconf.scene import _assets
+
+    bundle = _assets.meshcat_bundle()
+    assert bundle.parts[-4:] == ("meshcat", "viewer", "dist", "main.min.js")
+    assert bundle.stat().st_size > 500_000
+    monkeypatch.setattr(_assets, "find_spec", lambda name: None)
+    with pytest.raises(RuntimeError, match=r"meshcat is not installed.*pip install meshcat"):
+        _assets.meshcat_bundle()
 
 
 def test_placement_helpers_match_hand_values() -> None:

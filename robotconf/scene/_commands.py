@@ -1,8 +1,9 @@
 """The scene's messages: meshcat commands, batched transforms and label texts.
 
 A scene speaks meshcat's own command language (``set_object``, ``set_property``,
-``delete``, ``set_animation``; three.js JSON built by :mod:`meshcat.geometry`) plus two
-batched operations that keep a slider fast: all transforms of one update in one binary
+``delete``, ``set_animation``; three.js JSON built by :mod:`robotconf.scene._three`, packed
+with msgpack when it holds typed arrays, as meshcat's viewer decodes it) plus two batched
+operations that keep a slider fast: all transforms of one update in one binary
 buffer, and all label texts in one list. An :class:`Op` is a JSON-able dict plus its
 binary buffers; a :class:`SceneLog` keeps the latest op per key, so a new view, a page
 reload or an HTML export replays a compact scene instead of its whole history.
@@ -10,11 +11,13 @@ reload or an HTML export replays a compact scene instead of its whole history.
 
 from __future__ import annotations
 
-import uuid
 from collections.abc import Iterable, Sequence
 from typing import Any, NamedTuple
 
+import msgpack
 import numpy as np
+
+from . import _three
 
 __all__ = [
     "Op",
@@ -25,6 +28,8 @@ __all__ = [
     "transforms_op",
     "labels_op",
     "pack_ops",
+    "pack_command",
+    "unpack_command",
     "shape_object",
     "ROOT",
 ]
@@ -53,18 +58,36 @@ def set_object_op(path: str, obj: dict[str, Any]) -> Op:
     """
     command = {"type": "set_object", "path": path, "object": obj}
     if _has_ext(obj):
-        import umsgpack
-
-        return Op({"op": "packed", "type": "set_object", "path": path}, (umsgpack.packb(command),))
+        return Op({"op": "packed", "type": "set_object", "path": path}, (pack_command(command),))
     return command_op(command)
+
+
+def pack_command(command: dict[str, Any]) -> bytes:
+    """A command as the msgpack bytes meshcat's viewer decodes (``handle_command_bytearray``).
+
+    Floats stay 64-bit and strings use msgpack's str types, as meshcat's own packer writes
+    them; typed arrays are extension values (:data:`~robotconf.scene._three.FLOAT32_ARRAY`).
+
+    >>> unpack_command(pack_command({"type": "delete", "path": "/a"}))
+    {'type': 'delete', 'path': '/a'}
+    """
+    packed: bytes = msgpack.packb(command, use_bin_type=True)
+    return packed
+
+
+def unpack_command(data: bytes) -> dict[str, Any]:
+    """The command in :func:`pack_command`'s bytes (typed arrays stay ``msgpack.ExtType``)."""
+    return dict(msgpack.unpackb(data, raw=False))
 
 
 def _has_ext(value: Any) -> bool:
     if isinstance(value, dict):
         return any(_has_ext(v) for v in value.values())
+    if isinstance(value, msgpack.ExtType):
+        return True
     if isinstance(value, (list, tuple)):
         return any(_has_ext(v) for v in value)
-    return type(value).__name__ == "Ext"
+    return False
 
 
 def transforms_op(paths: Sequence[str], matrices: np.ndarray) -> Op:
@@ -175,14 +198,12 @@ def _kind(op: Op) -> str:
 
 def _command(op: Op) -> dict[str, Any]:
     if op.content["op"] == "packed":
-        import umsgpack
-
-        return dict(umsgpack.unpackb(op.buffers[0]))
+        return unpack_command(op.buffers[0])
     return dict(op.content.get("command", op.content))
 
 
 def shape_object(shape: str, size: float, color: int) -> dict[str, Any]:
-    """The three.js JSON of one unit shape, built with :mod:`meshcat.geometry`.
+    """The three.js JSON of one unit shape (:mod:`robotconf.scene._three`).
 
     Parameters
     ----------
@@ -191,56 +212,20 @@ def shape_object(shape: str, size: float, color: int) -> dict[str, Any]:
         Radius, half-width, triad length or label height (length units).
     color : int
         0xRRGGBB (ignored by triads and labels).
+
+    Examples
+    --------
+    >>> shape_object("cylinder", 0.5, 0x2CA02C)["geometries"][0]["height"]
+    1.0
     """
-    import meshcat.geometry as g
-
-    material = g.MeshLambertMaterial(color=color)
     if shape == "sphere":
-        return g.Mesh(g.Sphere(size), material).lower()
+        return _three.mesh(_three.sphere(size), _three.lambert_material(color))
     if shape == "cylinder":
-        return g.Mesh(g.Cylinder(1.0, size), material).lower()
+        return _three.mesh(_three.cylinder(1.0, size), _three.lambert_material(color))
     if shape == "box":
-        return g.Mesh(g.Box([2 * size, 1.0, 2 * size]), material).lower()
+        return _three.mesh(_three.box(2 * size, 1.0, 2 * size), _three.lambert_material(color))
     if shape == "triad":
-        return g.triad(size).lower()
+        return _three.triad(size)
     if shape == "label":
-        return _label_object(size)
+        return _three.label_sprite(size)
     raise ValueError(f"shape: unknown shape {shape!r}")  # pragma: no cover - internal
-
-
-def _label_object(height: float) -> dict[str, Any]:
-    # meshcat's viewer draws "_text" textures on a canvas; robotconf's glue reshapes it to
-    # 512×64 and redraws it when the text changes, so the sprite is created once.
-    texture, material, sprite = (str(uuid.uuid4()) for _ in range(3))
-    tall = height / 0.7  # the text fills about 70 % of the band
-    wide = 8.0 * tall
-    return {
-        "metadata": {"version": 4.5, "type": "Object"},
-        "geometries": [],
-        "textures": [
-            {
-                "uuid": texture,
-                "type": "_text",
-                "text": " ",
-                "font_size": 28,
-                "font_face": "sans-serif",
-            }
-        ],
-        "images": [],
-        "materials": [
-            {
-                "uuid": material,
-                "type": "SpriteMaterial",
-                "map": texture,
-                "transparent": True,
-                "depthTest": False,
-            }
-        ],
-        "object": {
-            "uuid": sprite,
-            "type": "Sprite",
-            "material": material,
-            "matrix": [wide, 0, 0, 0, 0, tall, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1],
-            "renderOrder": 10,
-        },
-    }

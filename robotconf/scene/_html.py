@@ -6,8 +6,8 @@ import base64
 import html
 import json
 
+from ._assets import meshcat_source, script
 from ._commands import Op, pack_ops
-from ._widget import meshcat_source, script
 
 __all__ = ["scene_html", "script_safe"]
 

@@ -1,4 +1,4 @@
-"""Point clouds in the scene (e.g. a sampled workspace), as meshcat points."""
+"""Point clouds in the scene (e.g. a sampled workspace), as three.js points."""
 
 from __future__ import annotations
 
@@ -9,6 +9,7 @@ import numpy as np
 from .._errors import InvalidInputError
 from .._validation import as_float_array
 from ._commands import Op, set_object_op
+from ._three import point_cloud
 
 __all__ = ["point_cloud_op", "MAX_POINTS"]
 
@@ -29,8 +30,6 @@ def point_cloud_op(path: str, points: Any, color: Any, size: float) -> Op:
     size : float
         Point size (length units).
     """
-    import meshcat.geometry as g
-
     xyz = as_float_array(points, "points", "an (N, 3) array of positions")
     if xyz.ndim != 2 or xyz.shape[1] != 3 or not 0 < len(xyz) <= MAX_POINTS:
         raise InvalidInputError(
@@ -41,7 +40,4 @@ def point_cloud_op(path: str, points: Any, color: Any, size: float) -> Op:
         rgb = np.broadcast_to(rgb, xyz.shape)
     if rgb.shape != xyz.shape or np.any((rgb < 0) | (rgb > 1)):
         raise InvalidInputError("color", color, "RGB values in 0…1, shape (3,) or (N, 3)")
-    cloud = g.PointCloud(
-        xyz.T.astype(np.float32), np.ascontiguousarray(rgb.T, dtype=np.float32), size=size
-    )
-    return set_object_op(path, cloud.lower())
+    return set_object_op(path, point_cloud(xyz, rgb, size))

@@ -332,6 +332,9 @@ def _log_key(op: Op) -> tuple[str, str]:
     if content["op"] == "command":
         command = content["command"]
         return (command["type"], command.get("path", ""))
+    if content["op"] == "packed":
+        # Keyed like its JSON form: one packed set_object per path, not one for the scene.
+        return (content["type"], content["path"])
     if content["op"] in ("transforms", "labels", "visible"):
         return (content["op"], "|".join(content["paths"]))
     return (content["op"], "")

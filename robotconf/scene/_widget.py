@@ -1,7 +1,8 @@
 """The notebook transport of the 3D scene: an anywidget that runs meshcat's viewer.
 
 No meshcat server, port or subprocess: meshcat's viewer JavaScript (bundled in the
-``meshcat`` wheel) reaches the page once per kernel through a hidden model, and each
+``meshcat`` wheel, read as a file by :mod:`robotconf.scene._assets`; no meshcat Python code
+runs) reaches the page once per kernel through a hidden model, and each
 scene's ops travel over the widget's comm channel, batched (one message per update, ≤ 60
 per second with an end-of-burst flush: Jupyter drops IOPub messages beyond about 1000/s).
 A new view asks for the scene log and gets a replay, so page reloads and second views
@@ -13,34 +14,16 @@ from __future__ import annotations
 import asyncio
 import time
 from collections.abc import Callable
-from functools import cache
-from pathlib import Path
 from typing import Any
 
 import anywidget
 import traitlets
 from ipywidgets import widget_serialization
 
+from ._assets import meshcat_source, script
 from ._commands import Op, pack_ops
 
 __all__ = ["SceneWidget", "WidgetChannel", "coalesce_ops", "meshcat_source", "script"]
-
-_JS = Path(__file__).parent / "js"
-
-
-@cache
-def meshcat_source() -> str:
-    """meshcat's bundled three.js viewer (``main.min.js``), read once."""
-    import meshcat
-
-    bundle = Path(meshcat.__file__).parent / "viewer" / "dist" / "main.min.js"
-    return bundle.read_text(encoding="utf-8")
-
-
-@cache
-def script(*names: str) -> str:
-    """robotconf's viewer JavaScript files, concatenated."""
-    return "\n".join((_JS / f"{name}.js").read_text(encoding="utf-8") for name in names)
 
 
 class MeshcatCode(anywidget.AnyWidget):
