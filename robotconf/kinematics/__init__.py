@@ -15,6 +15,8 @@ Points, axes and Jacobians
     :func:`robot_points`, :func:`format_point`, :func:`joint_axes`, :func:`jacobian`
 DH ⇄ modules, workspace
     :func:`dh_to_modules`, :func:`modules_to_dh`, :func:`workspace`, :class:`Workspace`
+Standard ⇄ modified DH
+    :func:`convert_dh` (the same robot), :func:`reinterpret_dh` (the same numbers)
 Building blocks (the kernel and the component-major helpers the motion layer uses)
     :class:`LinkGeometry`, :func:`chain_poses`, :func:`chain_origins`, :func:`chain_point`,
     :func:`link_matrices`, :func:`joint_screws`, :func:`pose_components`, …
@@ -49,6 +51,7 @@ from ._conventions import (
     kind_label,
 )
 from ._dh import DHLink, check_convention, dh_link_from_row, dh_matrix
+from ._dh_convention_change import convert_dh, reinterpret_dh
 from ._dh_conversion import dh_to_modules, modules_to_dh
 from ._geometry import LinkGeometry
 from ._jacobian import (
@@ -145,6 +148,8 @@ __all__ = [
     # DH ⇄ modules, workspace
     "dh_to_modules",
     "modules_to_dh",
+    "convert_dh",
+    "reinterpret_dh",
     "workspace",
     "Workspace",
     "WORKSPACE_METHODS",
