@@ -15,10 +15,11 @@ more memory than the budget, results that overflow, an unwritable folder), and
 from __future__ import annotations
 
 import argparse
+import os
 import sys
 import unicodedata
 import warnings
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Mapping, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING, NoReturn
 
@@ -36,6 +37,8 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = [
     "main",
+    "write_report",
+    "BadInput",
     "markdown_text",
     "EXIT_BAD_INPUT",
     "EXIT_INTERRUPTED",
@@ -88,7 +91,8 @@ SYMBOLIC_OFF = "No symbolic matrices: --no-symbolic was given."
 
 
 class BadInput(Exception):
-    """Raised for input the user can fix; ``main`` prints it on one line."""
+    """Raised for input the user can fix; ``main`` prints it on one line, the panel shows it
+    beside its report button."""
 
 
 class _Parser(argparse.ArgumentParser):
@@ -417,25 +421,76 @@ def _write_summary(motion: Motion, source: str, out: Path, files: list[str], sym
     (out / "report.md").write_text("\n".join(lines) + "\n", encoding="utf-8")
 
 
-def _report(args: argparse.Namespace) -> int:
+def write_report(
+    robot: Robot,
+    signals: Mapping[str | int, Signal | float],
+    settings: SimulationSettings,
+    out: str | os.PathLike[str],
+    *,
+    source: str = "robotconf",
+    length_unit: str = "length",
+    symbolic: bool = True,
+    scene: bool = True,
+    say: Callable[[str], None] | None = None,
+) -> list[str]:
+    """Write every result of the paper's §3 for one robot into the folder ``out``.
+
+    This is ``robotconf report`` without its command line: the command and the panel's
+    report download both call it, so they write the same files.
+
+    Parameters
+    ----------
+    robot : Robot
+    signals : mapping
+        Coordinate name or index → signal (a number holds it), as for
+        :func:`~robotconf.simulate`.
+    settings : SimulationSettings
+        t_end, dt, t0 and method.
+    out : path-like
+        The folder (created with its parents).
+    source : str
+        Where the robot came from, named in ``report.md`` (escaped there).
+    length_unit : str
+        Axis label unit of the figures.
+    symbolic : bool
+        Also write the symbolic matrices (long chains skip them anyway).
+    scene : bool
+        Write ``scene.html``.
+    say : callable, optional
+        Receives one progress line per step.
+
+    Returns
+    -------
+    list of str
+        The files written, ``report.md`` last.
+
+    Raises
+    ------
+    InvalidInputError
+        Bad signals or settings, or a run larger than the memory budget.
+    BadInput
+        Results that overflow, or a folder that cannot be created.
+
+    Examples
+    --------
+    >>> import tempfile, robotconf as rc
+    >>> with tempfile.TemporaryDirectory() as folder:
+    ...     files = write_report(
+    ...         rc.preset("paper"), {}, rc.SimulationSettings(1.0, 0.5), folder, scene=False
+    ...     )
+    >>> files[0], files[-1]
+    ('matrices.txt', 'report.md')
+    """
     from .motion import simulate
 
-    say: Callable[[str], None] = (lambda _: None) if args.quiet else print
-    out = Path(args.out)
-    if out.exists() and not out.is_dir():
-        raise BadInput(f"--out: {str(out)!r} exists and is not a folder")
-    robot, from_file, file_settings, source = _load(args)
-    signals: dict[str | int, Signal | float] = {k: v for k, v in from_file.items()}
-    for spec in args.signal:
-        name, signal = parse_signal_spec(spec)
-        signals[name] = signal
-    settings = _settings(args, file_settings)
+    say = say or (lambda _: None)
+    out = Path(out)
     _check_report_memory(robot, settings)
-    symbolic = _symbolic_state(robot, not args.no_symbolic)
-    total = 7 - args.no_scene
+    state = _symbolic_state(robot, symbolic)
+    total = 7 - (not scene)
     title = _one_line(robot.name or "Robot")
     say(f"[1/{total}] robot from {_one_line(source)}: {title}, {robot.n} modules")
-    motion = simulate(robot, signals, **settings.to_dict())
+    motion = simulate(robot, dict(signals), **settings.to_dict())
     stats = motion.stats()
     _check_finite(motion, stats)
     say(
@@ -446,22 +501,44 @@ def _report(args: argparse.Namespace) -> int:
         out.mkdir(parents=True, exist_ok=True)
     except OSError as error:
         raise BadInput(f"--out: cannot create {str(out)!r}: {error.strerror or error}") from None
-    files = _write_matrices(robot, out, symbolic)
+    files = _write_matrices(robot, out, state)
     skipped = {"off": " (symbolic: --no-symbolic)", "too long": " (symbolic: chain too long)"}
-    say(f"[3/{total}] {', '.join(files)}{skipped.get(symbolic, '')}")
+    say(f"[3/{total}] {', '.join(files)}{skipped.get(state, '')}")
     motion.to_csv(out / "dva.csv")
     stats.to_csv(out / "statistics.csv")
     files += ["dva.csv", "statistics.csv"]
     say(f"[4/{total}] dva.csv, statistics.csv")
-    plots = _write_plots(motion, out, args.length_unit)
+    plots = _write_plots(motion, out, length_unit)
     files += plots
     say(f"[5/{total}] {', '.join(plots)}")
-    if not args.no_scene:
-        scene = _write_scene(motion, out)
-        files += scene
+    if scene:
+        files += _write_scene(motion, out)
         say(f"[6/{total}] scene.html")
-    _write_summary(motion, source, out, files, symbolic)
+    _write_summary(motion, source, out, files, state)
     say(f"[{total}/{total}] report.md — done: {_one_line(out)}")
+    return [*files, "report.md"]
+
+
+def _report(args: argparse.Namespace) -> int:
+    out = Path(args.out)
+    if out.exists() and not out.is_dir():
+        raise BadInput(f"--out: {str(out)!r} exists and is not a folder")
+    robot, from_file, file_settings, source = _load(args)
+    signals: dict[str | int, Signal | float] = {k: v for k, v in from_file.items()}
+    for spec in args.signal:
+        name, signal = parse_signal_spec(spec)
+        signals[name] = signal
+    write_report(
+        robot,
+        signals,
+        _settings(args, file_settings),
+        out,
+        source=source,
+        length_unit=args.length_unit,
+        symbolic=not args.no_symbolic,
+        scene=not args.no_scene,
+        say=None if args.quiet else print,
+    )
     return 0
 
 

@@ -241,34 +241,34 @@ def test_header_controls_have_their_own_error_labels(monkeypatch):
 # -- mode switch with a pending bad value ----------------------------------------------------
 
 
-def test_mode_switch_keeps_the_robot_the_editor_shows():
+def test_mode_switch_with_a_pending_bad_value_keeps_the_robot_and_the_mark():
     panel = make_panel()
     panel.modules.rows[1].q.box.value = 30.0
     shown = panel.robot
     panel.modules.rows[2].q.box.value = float("nan")  # pending, refused
     assert panel.robot == shown
-    panel.mode.value = "dh"
-    assert panel.robot.n == 1  # the DH table's own (placeholder) robot
-    panel.mode.value = "modules"
-    assert panel.robot == shown  # not the DH placeholder: what the module list showed last
+    panel.mode.value = "dh"  # asks first: nothing is replaced yet
+    assert panel.mode.value == "modules" and panel.dh_entry.prompt.visible
+    assert panel.robot == shown
+    panel.dh_entry.prompt.cancel_button.click()
+    assert panel.robot == shown
+    np.testing.assert_allclose(panel.scene.q, shown.q)
     assert [row.kind.value for row in panel.modules.rows] == ["Rz", "Ry", "Ry"]
-    assert panel.scene.robot == shown
     assert len(panel.motion_section.editors) == 3
     assert "modules[2].q" in panel.errors  # the NaN is still marked
     panel.modules.rows[2].q.box.value = 10.0
     assert panel.robot.q[2] == pytest.approx(np.deg2rad(10.0)) and panel.errors == {}
 
 
-def test_mode_switch_onto_a_pending_bad_dh_row_keeps_the_dh_robot():
-    panel = make_panel()
-    panel.mode.value = "dh"
-    panel.dh.rows[0].cells["a"].box.value = 7.0
+def test_leaving_the_dh_table_with_a_pending_bad_row_converts_the_last_valid_robot():
+    panel = make_panel(rc.Robot.from_dh([(0, 0, 7.0, 0, "R")], end_effector=(1, 0, 0)))
     dh_robot = panel.robot
     panel.dh.rows[0].cells["d"].box.value = float("nan")
     panel.mode.value = "modules"
-    assert panel.robot.n == 3
-    panel.mode.value = "dh"
-    assert panel.robot == dh_robot
+    assert panel.mode.value == "modules"
+    np.testing.assert_allclose(panel.robot.end_effector(), dh_robot.end_effector())
+    panel.undo()
+    assert panel.robot == dh_robot and panel.mode.value == "dh"
 
 
 # -- symbolic matrices only where they are quick -------------------------------------------

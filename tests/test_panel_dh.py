@@ -47,9 +47,13 @@ def test_q_of_a_dh_row_updates_the_scene_without_rebuild():
     assert panel.scene.names() == ["update"]
 
 
-def test_convention_selector_switches_every_row():
+def test_convention_selector_reinterprets_every_row_when_asked_to():
     panel = dh_panel()
     panel.dh.convention.value = "modified"
+    assert panel.dh.convention_prompt.visible  # asks first: the robot is unchanged
+    assert panel.dh.convention.value == "standard" and panel.robot == rc.Robot.from_dh(ROWS)
+    panel.dh.convention_prompt.buttons["reinterpret"].click()
+    assert not panel.dh.convention_prompt.visible and panel.dh.convention.value == "modified"
     assert {link.convention for link in panel.robot.modules} == {"modified"}
     assert panel.robot == rc.Robot.from_dh(ROWS, convention="modified")
     assert "Craig" in panel.dh.convention_note.value
@@ -88,15 +92,50 @@ def test_add_remove_move_rows():
     assert panel.robot == rc.Robot.from_dh(ROWS)
 
 
-def test_switching_modes_keeps_each_editor_content():
+def test_opening_the_dh_table_asks_and_the_core_says_why_a_robot_cannot_convert():
     panel = make_panel()
-    panel.mode.value = "dh"  # empty table: seeded with one revolute row
-    assert len(panel.dh.rows) == 1
-    assert isinstance(panel.robot.modules[0], rc.DHLink)
-    panel.mode.value = "modules"
-    assert panel.robot == paper_robot()
     panel.mode.value = "dh"
-    assert panel.robot.n == 1
+    assert panel.mode.value == "modules" and panel.dh_entry.prompt.visible
+    panel.dh_entry.prompt.buttons["convert"].click()  # the paper's Ry joints: no DH chain
+    assert "turns about the y axis" in panel.errors["mode.dh"]
+    assert panel.robot == paper_robot() and panel.dh_entry.prompt.visible
+    panel.dh_entry.prompt.buttons["new"].click()  # said explicitly: a new one-row table
+    assert panel.mode.value == "dh" and not panel.dh_entry.prompt.visible
+    assert len(panel.dh.rows) == 1 and isinstance(panel.robot.modules[0], rc.DHLink)
+    assert "mode.dh" not in panel.errors
+    panel.undo()
+    assert panel.robot == paper_robot() and panel.mode.value == "modules"
+
+
+def test_a_modules_robot_converts_to_dh_rows_and_back_to_the_same_robot():
+    arm = rc.Robot(
+        [rc.Module("Rz", a=(0, 0, 20)), rc.Module("Rz", a=(30, 0, 0))], end_effector=(40, 0, 0)
+    )
+    panel = make_panel(arm.with_q([0.3, -0.2]))
+    panel.mode.value = "dh"
+    panel.dh_entry.convention.value = "modified"  # offsets before each joint: Craig's rows
+    panel.dh_entry.prompt.buttons["convert"].click()
+    assert panel.mode.value == "dh" and panel.dh.convention.value == "modified"
+    assert [row.cells["a"].box.value for row in panel.dh.rows] == [0.0, 30.0]
+    assert [row.cells["d"].box.value for row in panel.dh.rows] == [20.0, 0.0]
+    expected = [40 * np.cos(0.1) + 30 * np.cos(0.3), 40 * np.sin(0.1) + 30 * np.sin(0.3), 20]
+    np.testing.assert_allclose(panel.robot.end_effector(), expected, atol=1e-12)
+    assert panel.robot.q.tolist() == [0.3, -0.2]
+    panel.mode.value = "modules"  # DH rows → modules: the same robot, nothing to ask
+    np.testing.assert_allclose(panel.robot.end_effector(), arm.end_effector([0.3, -0.2]))
+    panel.undo()
+    panel.undo()
+    assert panel.robot == arm.with_q([0.3, -0.2])
+
+
+def test_dh_robot_to_modules_and_back_gives_the_same_rows():
+    panel = dh_panel()
+    panel.mode.value = "modules"
+    assert panel.mode.value == "modules" and panel.robot.n > 3
+    assert all(isinstance(link, rc.Module) for link in panel.robot.modules)
+    panel.mode.value = "dh"
+    panel.dh_entry.prompt.buttons["convert"].click()  # the held constants stay constants
+    assert panel.robot == rc.Robot.from_dh(ROWS)
 
 
 def test_mixed_robot_shows_dh_links_read_only_in_the_module_list():
@@ -106,3 +145,40 @@ def test_mixed_robot_shows_dh_links_read_only_in_the_module_list():
     assert not panel.modules.rows[1].is_module
     panel.modules.rows[1].q.box.value = 90.0
     assert panel.robot.modules[1] == rc.DHLink(a=10.0, q=np.pi / 2)
+
+
+@pytest.mark.skipif("puma560" not in rc.preset_names(), reason="no PUMA preset")
+def test_converting_the_puma_to_modified_dh_keeps_the_robot(rng):
+    puma = rc.preset("puma560")
+    panel = make_panel(puma)
+    panel.dh.convention.value = "modified"
+    assert panel.dh.convention_prompt.visible and panel.robot == puma
+    panel.dh.convention_prompt.buttons["convert"].click()
+    converted = panel.robot
+    assert panel.dh.convention.value == "modified" and not panel.dh.convention_prompt.visible
+    assert {link.convention for link in converted.modules} == {"modified"}
+    assert converted.n == 6 and len(panel.motion_section.editors) == 6
+    for q in rng.uniform(-np.pi, np.pi, size=(10, 6)):
+        np.testing.assert_allclose(
+            converted.end_effector_pose(q), puma.end_effector_pose(q), atol=1e-12
+        )
+    # The numbers moved (a and α one row down), and the boxes show them clean.
+    assert [row.cells["alpha"].box.value for row in panel.dh.rows] == [0, 90, 0, -90, 90, -90]
+    assert panel.preset.value == ""  # the same motion, but not the preset's table
+    panel.dh.convention.value = "standard"
+    panel.dh.convention_prompt.buttons["convert"].click()
+    assert panel.robot == puma and panel.preset.value == "puma560"
+    panel.undo()
+    panel.undo()
+    assert panel.robot == puma and panel.dh.convention.value == "standard"
+
+
+def test_a_refused_conversion_shows_the_core_message_beside_the_switch():
+    robot = rc.Robot.from_dh(ROWS).with_active(2)  # the core converts whole tables only
+    panel = make_panel(robot)
+    panel.dh.convention.value = "modified"
+    panel.dh.convention_prompt.buttons["convert"].click()
+    assert "inactive rows" in panel.errors["dh.convention.convert"]
+    assert panel.robot == robot and panel.dh.convention_prompt.visible
+    panel.dh.convention_prompt.cancel_button.click()
+    assert panel.errors == {} and panel.dh.convention.value == "standard"

@@ -248,10 +248,21 @@ def test_every_view_of_the_hostile_robot_stays_text(panel):
     assert panel.files.save_link.value
     assert FILE_NAME in check_page(panel)
 
-    # DH table and back; the wizard to its summary.
+    # DH table (converted, or the core's message naming a module; then a new table) and
+    # back, undone to the hostile robot; the wizard to its summary.
+    hostile = panel.robot
     panel.mode.value = "dh"
+    panel.dh_entry.prompt.buttons["convert"].click()
+    check_page(panel)
+    panel.dh_entry.prompt.buttons["new"].click()
     panel.dh.rows[0].cells["alpha"].box.value = 90.0
     panel.mode.value = "modules"
+    for _ in range(5):
+        if panel.robot == hostile:
+            break
+        panel.undo()
+    assert panel.robot == hostile
+    check_page(panel)
     panel.mode.value = "wizard"
     for _ in range(12):
         panel.wizard.next_button.click()

@@ -72,7 +72,8 @@ def test_typing_beyond_the_range_widens_it_and_the_widen_button_doubles_it():
 def test_slider_ranges_follow_the_core_joint_limits():
     panel = make_panel(rc.Robot([rc.Module("Rz", limits=(-1.0, 2.0)), rc.Module("Tz")]))
     q1 = panel.modules.rows[0].q.slider
-    assert (q1.min, q1.max) == pytest.approx((np.rad2deg(-1.0), np.rad2deg(2.0)))
+    # The limits (-57.3°, 114.6°) rounded outwards onto the 1° step: notches on whole degrees.
+    assert (q1.min, q1.max, q1.step) == (-58.0, 115.0, 1.0)
 
 
 def test_offsets_change_the_robot():
@@ -107,6 +108,8 @@ def test_the_last_module_cannot_be_removed():
     panel.modules.rows[0].remove_button.click()
     assert panel.robot.n == 1
     assert "cannot remove the last module" in panel.errors["modules"]
+    panel.modules.rows[0].q.box.value = 10.0  # the next valid edit: the message is old news
+    assert panel.errors == {}
 
 
 def test_active_count_makes_later_modules_identity():
@@ -215,3 +218,30 @@ def test_dh_preset_opens_the_dh_table():
 def test_set_robot_rejects_non_robots():
     with pytest.raises(rc.InvalidInputError, match="robot"):
         make_panel().set_robot("paper")  # type: ignore[arg-type]
+
+
+def test_the_trash_button_deletes_and_undo_brings_the_row_back_with_its_signal():
+    panel = make_panel()
+    panel.modules.rows[1].q.box.value = -30.0
+    panel.motion_section.editors[2].kind.value = "Sine"  # q3's signal
+    edited = panel.robot
+    panel.modules.rows[1].remove_button.click()  # module 2 goes; q3 becomes q2
+    assert panel.robot.n == 2 and panel.motion_section.editors[1].kind.value == "Sine"
+    panel.undo()
+    assert panel.robot == edited
+    np.testing.assert_allclose(panel.robot.end_effector(), edited.end_effector())
+    assert panel.modules.rows[1].q.box.value == -30.0
+    assert [e.kind.value for e in panel.motion_section.editors][2] == "Sine"  # with q3 again
+    panel.redo()
+    assert panel.robot.n == 2 and panel.motion_section.editors[1].kind.value == "Sine"
+
+
+def test_moves_are_undone_one_by_one():
+    panel = make_panel()
+    panel.modules.rows[2].up_button.click()
+    panel.modules.rows[1].up_button.click()  # M3 is now first
+    assert panel.robot.modules[0] == rc.Module("Ry", a=(30, 0, 0))
+    panel.undo()
+    assert panel.robot.modules[1] == rc.Module("Ry", a=(30, 0, 0))
+    panel.undo()
+    assert panel.robot == paper_robot()

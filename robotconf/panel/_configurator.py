@@ -18,18 +18,26 @@ import ipywidgets as widgets
 from .._errors import InvalidInputError
 from ..kinematics import DHLink, Robot
 from ..motion import Motion
-from ..presets import preset, preset_names
+from ..presets import preset
+from ._app_mode import app_mode
+from ._atomic_file import write_atomically
+from ._binding import FileBinding, bound_path
 from ._callbacks import observe
+from ._conversions import to_convention, to_modules
+from ._dh_entry import DHEntry
 from ._dh_table import DHTable
 from ._errors_display import ErrorLabel, collect_errors
+from ._exports import ExportsSection
 from ._files_section import FilesSection
 from ._matrices_view import MatricesView, end_effector_text
 from ._module_list import ModuleList
 from ._motion_section import MotionSection
+from ._preset_menu import PresetMenu
 from ._ranges import joint_limits, length_scale
 from ._robot_extras import RobotExtras
 from ._scene_slot import default_scene_factory
 from ._setup_io import setup_from, setup_to_json
+from ._undo_buttons import UndoButtons
 from ._wizard import Wizard
 
 __all__ = ["Configurator", "configurator"]
@@ -47,8 +55,10 @@ class Configurator:
 
     Parameters
     ----------
-    robot : Robot, optional
-        The robot to start with (default: the paper's preset when available).
+    robot : Robot or path-like, optional
+        The robot to start with (default: the paper's preset when available), or a
+        ``.json`` file to keep the work in: loaded when it exists (robot, signals, time
+        settings), and every valid change is saved to it (see :class:`FileBinding`).
     scene_factory : callable, optional
         ``robot -> scene``; the scene needs ``widget``, ``set_robot(robot, q)`` and
         ``update(q)`` (``animate(motion)`` optional). Default: :class:`robotconf.scene.Scene`.
@@ -59,11 +69,20 @@ class Configurator:
     method : {"analytic", "numeric"}
     scene_height : int
         Height of the default 3D scene (pixels).
+    app : bool or None
+        ``True`` when no notebook cells surround the panel (an app in Voilà): the panel then
+        leaves out its hints to check things in a cell. ``None`` (default) detects Voilà.
 
     Attributes
     ----------
     robot : Robot
         Always the current valid robot.
+    app : bool
+        Whether the panel runs as an app (no code hints).
+    binding : FileBinding
+        The file the panel keeps its work in (``binding.path`` is ``None`` when unbound).
+    history : UndoButtons
+        The ↶ ↷ buttons and their history of robots (:meth:`undo`, :meth:`redo`).
     motion : Motion or None
         The last simulation (``None`` before Run).
     errors : dict
@@ -82,6 +101,9 @@ class Configurator:
     >>> panel.modules.rows[1].kind.value = "Rz"  # module 2 becomes a rotation about z
     >>> panel.robot.modules[1]
     Module('Rz', a=(0.0, 0.0, 20.0))
+    >>> panel.undo()  # every change of the robot can be undone (and redone)
+    >>> panel.robot.modules[1]
+    Module('Ry', a=(0.0, 0.0, 20.0))
     >>> panel.motion_section.dt.value = 0.0
     >>> panel.motion_section.run_button.click()
     >>> panel.motion is None, panel.errors["dt"][:29]
@@ -90,7 +112,7 @@ class Configurator:
 
     def __init__(
         self,
-        robot: Robot | None = None,
+        robot: Robot | str | os.PathLike[str] | None = None,
         *,
         scene_factory: Callable[[Robot], Any] | None = None,
         degrees: bool = True,
@@ -98,24 +120,27 @@ class Configurator:
         dt: float = 0.01,
         method: str = "analytic",
         scene_height: int = 420,
+        app: bool | None = None,
     ):
+        file = bound_path(robot)
+        self.app = app_mode(app)
+        self.binding = FileBinding(file, self.to_json, app=self.app)
+        saved = self.binding.load()  # (robot, signals, simulation) of the bound file
+        if file is not None:
+            robot = None if saved is None else saved[0]
         robot = _default_robot() if robot is None else robot
         if not isinstance(robot, Robot):
-            raise InvalidInputError("robot", robot, "a robotconf Robot or None")
+            raise InvalidInputError("robot", robot, "a robotconf Robot, a .json file or None")
         self._robot = robot
-        # The last robot each editor described, for a mode switch onto a pending bad value.
-        self._last_valid: dict[str, Robot] = {}
+        # The editor that shows the robot: DH rows for an all-DH robot, else the modules.
+        self._editor_mode = "modules"
+        self._preview: Robot | None = None  # what the wizard shows in the scene, if anything
         self._loading = False
         self.title = widgets.HTML("<h3 style='margin:4px 0'>robotconf configurator</h3>")
-        names = preset_names()
-        self.preset = widgets.Dropdown(
-            options=[("— preset —", ""), *((n, n) for n in names)],
-            value=robot.name if robot.name in names else "",
-            description="preset",
-            disabled=not names,
-            layout=widgets.Layout(width="220px"),
-        )
-        self.preset_error = ErrorLabel()
+        self.presets = PresetMenu(robot, self._load_robot, lambda: self._robot)
+        self.preset, self.preset_error = self.presets.dropdown, self.presets.error
+        self.history = UndoButtons(robot, self._restore)
+        self.dh_entry = DHEntry(lambda: self._robot, self._load_converted)
         self.mode = widgets.ToggleButtons(options=_MODES, value="modules")
         self.mode_error = ErrorLabel()
         self.angle_unit = widgets.ToggleButtons(
@@ -126,14 +151,34 @@ class Configurator:
         )
         self.angle_unit_error = ErrorLabel()
         self.modules = ModuleList(self._edited)
-        self.dh = DHTable(self._edited)
-        self.wizard = Wizard(self._wizard_finished, degrees, length_scale(robot))
-        self.extras = RobotExtras(lambda: self._edited("link", None))
-        self.matrices = MatricesView()
-        self.motion_section = MotionSection(
-            lambda: self._robot, self._animate, t_end=t_end, dt=dt, method=method
+        self.dh = DHTable(self._edited, self._convert_convention)
+        self.wizard = Wizard(
+            self._wizard_finished,
+            degrees,
+            length_scale(robot),
+            on_preview=self._wizard_preview,
+            on_cancel=self._wizard_cancelled,
         )
-        self.files = FilesSection(self.to_json, self._load_bytes)
+        self.extras = RobotExtras(lambda: self._edited("link", None))
+        self.matrices = MatricesView(app=self.app)
+        self.motion_section = MotionSection(
+            lambda: self._robot,
+            self._animate,
+            t_end=t_end,
+            dt=dt,
+            method=method,
+            app=self.app,
+            on_change=self.binding.changed,
+        )
+        self.exports = ExportsSection(
+            lambda: self._robot,
+            self.motion_section,
+            source=lambda: self.binding.name or "configurator panel",
+            app=self.app,
+        )
+        self.files = FilesSection(
+            self.to_json, self._load_bytes, app=self.app, exports=self.exports
+        )
         self.ee_label = widgets.HTML()
         self.ee_label.add_class("robotconf-ee")
         factory = scene_factory or default_scene_factory(scene_height)
@@ -151,8 +196,10 @@ class Configurator:
         self.widget = widgets.VBox(
             [
                 self.title,
+                widgets.HBox([self.binding.widget, self.binding.error.widget]),
                 widgets.HBox(
                     [
+                        self.history.widget,
                         self.preset,
                         self.preset_error.widget,
                         self.mode,
@@ -162,6 +209,7 @@ class Configurator:
                     ],
                     layout=widgets.Layout(flex_flow="row wrap", align_items="center"),
                 ),
+                self.dh_entry.widget,
                 widgets.HBox(
                     [
                         widgets.Box(
@@ -177,13 +225,15 @@ class Configurator:
                 ),
             ]
         )
-        observe(self.preset, self.preset_error, self._preset_chosen)
-        observe(self.mode, self.mode_error, lambda _: self._mode_changed())
+        self._mode_handler = observe(self.mode, self.mode_error, self._mode_changed)
         observe(self.angle_unit, self.angle_unit_error, lambda c: self._set_degrees(c["new"]))
         # Showing the Matrices tab computes the symbolic view: its failures show there.
         observe(self.results, self.matrices.error, self._tab_changed, "selected_index")
         self.matrices.set_visible(False)
         self._load_robot(robot, first=True)
+        if saved is not None:
+            self.motion_section.load(saved[1], saved[2])
+        self.binding.start()
 
     # -- public -------------------------------------------------------------------------
 
@@ -207,12 +257,14 @@ class Configurator:
         if not isinstance(robot, Robot):
             raise InvalidInputError("robot", robot, "a robotconf Robot")
         self._load_robot(robot)
-        if self.preset.value:
-            self._loading = True  # a robot from elsewhere is not the preset shown
-            try:
-                self.preset.value = ""
-            finally:
-                self._loading = False
+
+    def undo(self) -> None:
+        """Go back to the robot before the last change (an edit, a load, a conversion)."""
+        self.history.undo()
+
+    def redo(self) -> None:
+        """Bring back the robot the last :meth:`undo` left."""
+        self.history.redo()
 
     def to_json(self) -> str:
         """The robot, the signals and the time settings as the core's JSON text."""
@@ -224,8 +276,12 @@ class Configurator:
         return setup_to_json(self._robot, signals, self.motion_section.settings())
 
     def save(self, path: str | os.PathLike[str]) -> None:
-        """Write :meth:`to_json` to ``path`` (UTF-8)."""
-        Path(path).write_text(self.to_json(), encoding="utf-8")
+        """Write :meth:`to_json` to ``path`` (UTF-8, the file replaced in one step)."""
+        text = self.to_json()  # an invalid setup is refused before any file is touched
+        if self.binding.owns(path):
+            self.binding.save_now()  # the binding keeps track of its file's versions
+        else:
+            write_atomically(path, text)
 
     def load(self, path: str | os.PathLike[str]) -> None:
         """Load a robot with its signals and time settings from a JSON file."""
@@ -235,8 +291,9 @@ class Configurator:
         self._apply_setup(*setup_from(content))
 
     def _apply_setup(self, robot: Robot, signals: dict, simulation: dict | None) -> None:
-        self.set_robot(robot)
-        self.motion_section.load(signals, simulation)
+        with self.binding.batch():  # the bound file gets the whole setup, once
+            self.set_robot(robot)
+            self.motion_section.load(signals, simulation)
 
     def _repr_mimebundle_(self, **kwargs: Any) -> Any:
         return self.widget._repr_mimebundle_(**kwargs)
@@ -246,22 +303,41 @@ class Configurator:
 
     # -- loading ------------------------------------------------------------------------
 
-    def _load_robot(self, robot: Robot, first: bool = False) -> None:
+    def _load_robot(
+        self,
+        robot: Robot,
+        first: bool = False,
+        order: Sequence[int | None] | None = None,
+        record: bool = True,
+    ) -> None:
+        """Show ``robot`` in the editor that suits it and make it the current robot.
+
+        ``order`` maps its coordinates to the old ones (a conversion); ``record=False``
+        for a robot that comes from the history itself.
+        """
         degrees = bool(self.angle_unit.value)
         scale = length_scale(robot)
         all_dh = all(isinstance(link, DHLink) for link in robot.modules)
         self._loading = True
         try:
+            self.dh_entry.close()
+            self.dh.convention_prompt.close()
             self.modules.load(robot.modules, scale, degrees, joint_limits(robot))
             if all_dh:
                 self.dh.load(robot.modules, scale, degrees, joint_limits(robot))  # type: ignore[arg-type]
             self.extras.load(robot.n, robot.active, robot.end_effector_point, scale)
-            self.mode.value = "dh" if all_dh else "modules"
+            self._editor_mode = "dh" if all_dh else "modules"
+            self.mode.value = self._editor_mode
             self._show_editor()
         finally:
             self._loading = False
-        self._last_valid = {"modules": robot, **({"dh": robot} if all_dh else {})}
-        self._accept(robot, rebuild=not first, first=first)
+        self._accept(robot, order=order, rebuild=not first, first=first, record=record)
+
+    def _load_converted(self, robot: Robot, order: Sequence[int | None]) -> None:
+        self._load_robot(robot, order=order)
+
+    def _restore(self, robot: Robot, order: Sequence[int | None] | None) -> None:
+        self._load_robot(robot, order=order, record=False)
 
     def _show_editor(self) -> None:
         mode = self.mode.value
@@ -303,18 +379,11 @@ class Configurator:
             label.show(str(error))
             return None
         self.extras.active_error.clear()
-        self._leave_preset(robot)
-        self._last_valid[mode] = robot
-        self._accept(robot, order=order if reason == "structure" else None)
+        structure = reason == "structure"
+        # A drag or a burst of typing in one control is one undo step; a row added,
+        # removed or moved is always its own.
+        self._accept(robot, order=order if structure else None, coalesce=not structure)
         return robot
-
-    def _leave_preset(self, robot: Robot) -> None:
-        if self.preset.value and robot != self._robot:
-            self._loading = True  # the robot was edited: it is no longer the preset
-            try:
-                self.preset.value = ""
-            finally:
-                self._loading = False
 
     def _accept(
         self,
@@ -322,8 +391,11 @@ class Configurator:
         order: Sequence[int | None] | None = None,
         rebuild: bool = False,
         first: bool = False,
+        record: bool = True,
+        coalesce: bool = False,
     ) -> None:
         old, self._robot = self._robot, robot
+        self._preview = None  # the scene shows the panel's robot from here on
         if not first:
             if not rebuild and robot.n == old.n and robot.with_q(old.q) == old:
                 self.scene.update(robot.q)  # only q changed: transforms, no rebuild
@@ -336,42 +408,42 @@ class Configurator:
         else:
             self.motion_section.mark_stale(robot)
         self.matrices.show(robot)
+        self.exports.show(robot)
         self.ee_label.value = (
             f"<b>End-effector</b> <code>{html.escape(end_effector_text(robot))}</code>"
         )
+        if record:
+            self.history.record(robot, coalesce, None if order is None else list(order))
+        self.presets.show(robot)
+        self.binding.changed()  # last: the file gets the state every view now shows
 
     # -- header controls ----------------------------------------------------------------
 
-    def _preset_chosen(self, change: dict[str, Any]) -> None:
-        name = change["new"]
-        if not name or self._loading:
-            return
-        self.preset_error.clear()
-        try:
-            robot = preset(name)
-        except InvalidInputError as error:
-            self.preset_error.show(str(error))
-            return
-        self._load_robot(robot)
-
-    def _mode_changed(self) -> None:
+    def _mode_changed(self, change: dict[str, Any]) -> None:
+        """Another editing mode: the same robot in it, or a question; never a silent swap."""
         if self._loading:
             return
-        self._show_editor()
-        if self.mode.value == "wizard":
+        new, old = change["new"], change["old"]
+        self.dh_entry.close()
+        if old == "wizard":
+            self._wizard_preview(None)  # the wizard was left unfinished: show the robot
+        if new == "wizard":
+            self._show_editor()
             self.wizard.restart()
             return
-        if self.mode.value == "dh" and not self.dh.rows:
-            self.dh.load([DHLink(a=length_scale(self._robot) / 10.0)], length_scale(self._robot))
-        if self._rebuild("structure", None) is not None:
+        if new == self._editor_mode:
+            self._show_editor()
             return
-        # The editor holds a value the core refuses (a NaN being typed, say): the panel
-        # shows the last robot this editor described, not the other mode's robot.
-        last = self._last_valid.get(self.mode.value)
-        if last is not None and last != self._robot:
-            self.extras.set_count(last.n)
-            self._leave_preset(last)
-            self._accept(last, rebuild=True)
+        # The selector keeps showing the old mode until the robot is in the new one.
+        with self._mode_handler.paused():
+            self.mode.value = old
+        if new == "modules":
+            self._load_converted(*to_modules(self._robot))  # DH rows → modules: same robot
+        else:
+            self.dh_entry.ask(self.dh.convention.value)  # convert, or start a new table?
+
+    def _convert_convention(self, convention: str) -> None:
+        self._load_converted(*to_convention(self._robot, convention))
 
     def _set_degrees(self, degrees: bool) -> None:
         for editor in (self.modules, self.dh, self.wizard):
@@ -380,8 +452,23 @@ class Configurator:
     def _wizard_finished(self, robot: Robot) -> None:
         self._load_robot(robot)
 
+    def _wizard_preview(self, robot: Robot | None) -> None:
+        """Show the wizard's robot in the scene, or (``None``) the panel's robot again."""
+        if robot is None:
+            if self._preview is not None:
+                self._preview = None
+                self.scene.set_robot(self._robot, self._robot.q)
+            return
+        if robot != self._preview:
+            self._preview = robot
+            self.scene.set_robot(robot, robot.q)
+
+    def _wizard_cancelled(self) -> None:
+        self.mode.value = self._editor_mode
+
     def _tab_changed(self, change: dict[str, Any]) -> None:
         self.matrices.set_visible(change["new"] == _MATRICES_TAB)
+        self.files.set_visible(change["new"] == _FILES_TAB)
 
     def _animate(self, motion: Motion) -> None:
         animate = getattr(self.scene, "animate", None)
@@ -391,7 +478,9 @@ class Configurator:
 
     def _error_items(self) -> Iterator[tuple[str, ErrorLabel]]:
         yield "preset", self.preset_error
+        yield "history", self.history.error
         yield "mode", self.mode_error
+        yield "mode.dh", self.dh_entry.prompt.error
         yield "angle_unit", self.angle_unit_error
         yield from self.matrices.error_items()
         yield from self.modules.error_items()
@@ -400,18 +489,23 @@ class Configurator:
         yield from self.wizard.error_items()
         yield from self.motion_section.error_items()
         yield from self.files.error_items()
+        yield from self.binding.error_items()
 
 
-def configurator(robot: Robot | None = None, **options: Any) -> Configurator:
+def configurator(
+    robot: Robot | str | os.PathLike[str] | None = None, **options: Any
+) -> Configurator:
     """Build a :class:`Configurator` for ``robot``, display it, and return it.
 
     Parameters
     ----------
-    robot : Robot, optional
-        Default: the paper's R_zR_yR_y preset when available.
+    robot : Robot or path-like, optional
+        Default: the paper's R_zR_yR_y preset when available. A ``.json`` file name
+        (``rc.configurator("my_robot.json")``) keeps the work in that file: the panel
+        loads it when it exists and saves every valid change to it.
     **options
         Passed to :class:`Configurator` (``scene_factory``, ``degrees``, ``t_end``, ``dt``,
-        ``method``, ``scene_height``).
+        ``method``, ``scene_height``, ``app``).
 
     Returns
     -------

@@ -25,9 +25,10 @@ from ..kinematics import (
     dh_formula,
 )
 from ._callbacks import observe, on_click
+from ._choice_prompt import ChoicePrompt
 from ._errors_display import ErrorLabel
 from ._number_control import NumberControl
-from ._ranges import q_display, q_range
+from ._ranges import length_step, q_display, q_range
 from ._row_list import ChangeCallback, RowList
 
 __all__ = ["DHTable", "DHRow"]
@@ -86,6 +87,7 @@ class DHRow:
                 slider=False,
                 on_change=lambda _: on_change("link"),
                 label_width="14px",
+                length_step=length_step(scale),
             )
             for name in self.FIELDS
         }
@@ -108,6 +110,7 @@ class DHRow:
             unit=label,
             on_change=lambda _: on_change("q"),
             label_width="16px",
+            length_step=length_step(scale),
         )
         buttons = []
         for icon, action in (("arrow-up", "up"), ("arrow-down", "down"), ("trash", "remove")):
@@ -181,18 +184,36 @@ class DHRow:
 class DHTable(RowList):
     """DH-table mode: rows, add button and the standard/modified selector.
 
+    Choosing the other convention asks first, in a row under the selector: **convert
+    (same robot)** hands the convention to ``on_convert`` (the panel converts the robot
+    with the core's ``convert_dh``); **reinterpret (same numbers)** keeps every number
+    and reads the rows in the other convention (another robot).
+
+    Parameters
+    ----------
+    on_change : callable
+        ``on_change(reason, order)`` after every user edit.
+    on_convert : callable, optional
+        ``on_convert(convention)`` for "convert (same robot)"; without it that answer
+        is disabled.
+
     Examples
     --------
     >>> import robotconf as rc
     >>> table = DHTable(lambda reason, order: None)
     >>> table.load([rc.DHLink(a=1.0), rc.DHLink(a=1.0)], scale=2.0)
-    >>> table.convention.value = "modified"
+    >>> table.convention.value = "modified"  # asks: convert or reinterpret?
+    >>> table.convention.value, table.convention_prompt.visible
+    ('standard', True)
+    >>> table.convention_prompt.buttons["reinterpret"].click()
     >>> {link.convention for link in table.links()}
     {'modified'}
     """
 
-    def __init__(self, on_change: ChangeCallback):
+    def __init__(self, on_change: ChangeCallback, on_convert: Callable[[str], None] | None = None):
         super().__init__(on_change, widgets.Button(description="add row", icon="plus"))
+        self._on_convert = on_convert
+        self._pending_convention = ""
         self.convention = widgets.ToggleButtons(
             options=DH_CONVENTIONS,
             value="standard",
@@ -205,9 +226,26 @@ class DHTable(RowList):
         self._convention_handler = observe(
             self.convention, self.convention_error, self._convention_changed
         )
+        self.convention_prompt = ChoicePrompt(
+            [
+                (
+                    "convert",
+                    "convert (same robot)",
+                    "rewrite the rows so that every frame and the end-effector stay put",
+                ),
+                (
+                    "reinterpret",
+                    "reinterpret (same numbers)",
+                    "keep every number and read the rows in the other convention",
+                ),
+            ],
+            self._convention_answered,
+        )
+        self.convention_prompt.buttons["convert"].disabled = on_convert is None
         self.widget = widgets.VBox(
             [
                 widgets.HBox([self.convention, self.convention_error.widget]),
+                self.convention_prompt.widget,
                 self.convention_note,
                 self._rows_box,
                 widgets.HBox([self.add_button, self.error.widget]),
@@ -233,10 +271,9 @@ class DHTable(RowList):
 
         ``limits`` is an (n, 2) array of joint limits in core units, or ``None``.
         """
+        self.convention_prompt.close()
         if links:
-            with self._convention_handler.paused():
-                self.convention.value = links[0].convention
-            self._show_note()
+            self._set_convention(links[0].convention)
         self._load_rows(links, scale, degrees, limits)
 
     def links(self) -> list[DHLink] | None:
@@ -254,6 +291,7 @@ class DHTable(RowList):
         """``(key, label)`` pairs: ``dh`` and ``dh[i].<field>``."""
         yield "dh", self.error
         yield "dh.convention", self.convention_error
+        yield "dh.convention.convert", self.convention_prompt.error
         for i, row in enumerate(self.rows):
             yield f"dh[{i}]", row.error
             for field, control in row.controls():
@@ -269,6 +307,21 @@ class DHTable(RowList):
     def _row_changed(self, reason: str) -> None:
         self._on_change(reason, None)
 
-    def _convention_changed(self, _: Any) -> None:
+    def _set_convention(self, convention: str) -> None:
+        with self._convention_handler.paused():
+            self.convention.value = convention
         self._show_note()
+
+    def _convention_changed(self, change: dict[str, Any]) -> None:
+        # The selector shows the table's convention until the user says what switching means.
+        self._pending_convention = change["new"]
+        self._set_convention(change["old"])
+        self.convention_prompt.ask(f"Switch the table to {change['new']} DH:")
+
+    def _convention_answered(self, answer: str) -> None:
+        convention = self._pending_convention
+        if answer == "convert" and self._on_convert is not None:
+            self._on_convert(convention)  # the panel loads the converted robot
+            return
+        self._set_convention(convention)
         self._on_change("link", None)

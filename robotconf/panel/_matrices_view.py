@@ -22,10 +22,12 @@ import numpy as np
 from .._errors import InvalidInputError
 from ..kinematics import Robot
 from ..teaching import Derivation, derivation, format_number, symbolic_fits
+from ._app_mode import code_hint
 from ._callbacks import observe
 from ._errors_display import ErrorLabel
+from ._monospace import preformatted
 
-__all__ = ["MatricesView", "end_effector_text"]
+__all__ = ["MatricesView", "end_effector_text", "too_long_note"]
 
 
 def end_effector_text(robot: Robot, precision: int = 4) -> str:
@@ -52,10 +54,22 @@ def math_html(latex: str) -> str:
 #: Shown instead of the symbolic box's effect for a chain too long to derive quickly.
 TOO_LONG_NOTE = (
     "<small>Symbolic matrices are offered for shorter chains only: their size doubles with "
-    "every rotation, and this chain would keep the kernel busy for a long time. "
-    "<code>rc.derivation(panel.robot, symbolic=True)</code> in a cell still builds them "
-    "(it may take minutes).</small>"
+    "every rotation, and this chain would keep the kernel busy for a long time.{hint}</small>"
 )
+#: The way around it, for a notebook only (the app has no cells).
+TOO_LONG_HINT = (
+    " <code>rc.derivation(panel.robot, symbolic=True)</code> in a cell still builds them "
+    "(it may take minutes)."
+)
+
+
+def too_long_note(app: bool = False) -> str:
+    """The note shown for a chain too long for symbolic matrices.
+
+    >>> "in a cell" in too_long_note(app=False), "in a cell" in too_long_note(app=True)
+    (True, False)
+    """
+    return TOO_LONG_NOTE.format(hint=code_hint(TOO_LONG_HINT, app))
 
 
 class MatricesView:
@@ -63,6 +77,13 @@ class MatricesView:
 
     The symbolic derivation does not depend on q, so it is cached per robot structure and a
     q slider never recomputes it.
+
+    Parameters
+    ----------
+    precision : int
+        Significant digits of the numeric printout.
+    app : bool
+        The panel runs without cells around it (Voilà): no hint to type code in a cell.
 
     Examples
     --------
@@ -73,8 +94,9 @@ class MatricesView:
     True
     """
 
-    def __init__(self, precision: int = 4):
+    def __init__(self, precision: int = 4, *, app: bool = False):
         self.precision = precision
+        self.app = app
         self.style = widgets.ToggleButtons(
             options=(("text", "text"), ("LaTeX", "latex")),
             value="text",
@@ -88,6 +110,7 @@ class MatricesView:
         # Items of a scrolling column keep their height: a long printout must scroll, not
         # shrink the rows above it until the printout covers them.
         self.numeric_text = widgets.HTML(layout=widgets.Layout(flex="0 0 auto"))
+        self.numeric_text.add_class("robotconf-matrices")
         self.numeric_math = widgets.HTMLMath(layout=widgets.Layout(display="none", flex="0 0 auto"))
         self.symbolic_math = widgets.HTMLMath(layout=widgets.Layout(flex="0 0 auto"))
         self.symbolic_note = widgets.HTML()
@@ -124,7 +147,7 @@ class MatricesView:
         self._robot = robot
         fits = symbolic_fits(robot)
         self.symbolic.disabled = self.lengths.disabled = not fits
-        self.symbolic_note.value = "" if fits else TOO_LONG_NOTE
+        self.symbolic_note.value = "" if fits else too_long_note(self.app)
         self.derivation = derivation(robot, precision=self.precision)
         self._render_numeric()
         self._render_symbolic()
@@ -145,7 +168,7 @@ class MatricesView:
         if latex:
             self.numeric_math.value = math_html(self.derivation.latex())
         else:
-            self.numeric_text.value = f"<pre>{html.escape(str(self.derivation))}</pre>"
+            self.numeric_text.value = preformatted(str(self.derivation))
         self.numeric_text.layout.display = "none" if latex else None
         self.numeric_math.layout.display = None if latex else "none"
 

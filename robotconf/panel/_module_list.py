@@ -75,6 +75,7 @@ class ModuleList(RowList):
         links = [row.link() for row in self.rows]
         if any(link is None for link in links):
             return None
+        self.error.clear()  # a refused add/remove is old news once the list is valid
         return links  # type: ignore[return-value]
 
     def error_items(self) -> Iterator[tuple[str, ErrorLabel]]:

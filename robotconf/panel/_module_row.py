@@ -23,7 +23,7 @@ from ..kinematics import (
 from ._callbacks import observe, on_click
 from ._errors_display import ErrorLabel
 from ._number_control import NumberControl
-from ._ranges import q_display, q_range
+from ._ranges import length_step, q_display, q_range
 
 __all__ = ["ModuleRow", "KIND_OPTIONS"]
 
@@ -114,6 +114,7 @@ class ModuleRow:
                 unit="",
                 on_change=self._link_changed,
                 label_width="24px",
+                length_step=length_step(scale),
             )
             for name, value in zip(MODULE_OFFSETS, a, strict=True)
         )
@@ -129,6 +130,7 @@ class ModuleRow:
             unit=label,
             on_change=self._q_changed,
             label_width="24px",
+            length_step=length_step(scale),
         )
         # Stable hooks for browser tests and for instructors' custom CSS.
         self.kind.add_class("robotconf-module-kind")

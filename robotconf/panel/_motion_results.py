@@ -22,6 +22,8 @@ __all__ = ["MotionResults", "MAX_TABLE_ROWS"]
 #: Rows shown in the on-screen table; the CSV always holds every sample.
 MAX_TABLE_ROWS = 500
 _ALL = "all points"
+#: Where every sample is, in a notebook; the app (no cells) names only the CSV.
+_BOTH_HOLD = "the CSV and <code>panel.motion.table</code> hold"
 
 
 def _html_table(frame: pd.DataFrame) -> str:
@@ -40,10 +42,13 @@ class MotionResults:
     ----------
     animate : callable
         Called with the motion when the user presses "animate in 3D".
+    app : bool
+        The panel runs without cells around it (Voilà): no hint to type code in a cell.
     """
 
-    def __init__(self, animate: Callable[[Motion], None]):
+    def __init__(self, animate: Callable[[Motion], None], *, app: bool = False):
         self._animate = animate
+        self.app = app
         self.motion: Motion | None = None
         self.point = widgets.Dropdown(options=["EE"], value="EE", description="point")
         self.displacement = widgets.Checkbox(
@@ -129,7 +134,7 @@ class MotionResults:
         shown = self._columns(table).iloc[::step]
         self.table_note.value = (
             f"<small>{len(shown)} of {len(table)} samples shown (every {step}th); "
-            "the CSV and <code>panel.motion.table</code> hold all.</small>"
+            f"{'the CSV holds' if self.app else _BOTH_HOLD} all.</small>"
             if step > 1
             else f"<small>{len(table)} samples</small>"
         )

@@ -11,7 +11,7 @@ from .._errors import InvalidInputError
 from ..kinematics import Robot
 from ..motion import METHODS, Motion, SimulationSettings, simulate
 from ..signals import Signal
-from ._callbacks import on_click
+from ._callbacks import observe, on_click
 from ._errors_display import ErrorLabel
 from ._motion_results import MotionResults
 
@@ -39,6 +39,10 @@ class MotionSection:
     t_end, dt : float
         Initial time settings (s).
     method : {"analytic", "numeric"}
+    app : bool
+        The panel runs without cells around it (Voilà): no hint to type code in a cell.
+    on_change : callable, optional
+        Called after the user changed a signal or a time setting (the bound file saves).
 
     Examples
     --------
@@ -60,8 +64,11 @@ class MotionSection:
         t_end: float = 10.0,
         dt: float = 0.01,
         method: str = "analytic",
+        app: bool = False,
+        on_change: Callable[[], None] | None = None,
     ):
         self._robot = robot
+        self._on_change = on_change or (lambda: None)
         self._t0 = 0.0
         self.motion: Motion | None = None
         self.editors: list[Any] = []
@@ -84,7 +91,7 @@ class MotionSection:
         self.run_button = widgets.Button(description="Run", icon="play", button_style="primary")
         self.status = widgets.HTML()
         self.run_error = ErrorLabel()
-        self.results = MotionResults(animate)
+        self.results = MotionResults(animate, app=app)
         self._editors_box = widgets.VBox()
         self.widget = widgets.VBox(
             [
@@ -101,6 +108,8 @@ class MotionSection:
             ]
         )
         on_click(self.run_button, self.run_error, self.run)
+        for name in ("t_end", "dt", "method"):
+            observe(getattr(self, name), self.setting_errors[name], self._setting_changed)
 
     # -- editors ------------------------------------------------------------------------
 
@@ -122,7 +131,7 @@ class MotionSection:
                 editor = old[source]
                 editor.rename(f"q{i + 1}", _unit(robot, i))
             else:
-                editor = SignalEditor(f"q{i + 1}", _unit(robot, i))
+                editor = SignalEditor(f"q{i + 1}", _unit(robot, i), self._on_change)
             editors.append(editor)
         self.editors = editors
         self._editors_box.children = tuple(e.widget for e in editors)
@@ -203,11 +212,34 @@ class MotionSection:
             self.status.value = ""
             return None
         self.motion = motion
-        self.status.value = f"<small>{motion.t.size} samples, {motion.method}</small>"
+        self.status.value = _ran(motion)
         self.results.show(motion)
         return motion
 
     def mark_stale(self, robot: Robot) -> None:
-        """Say so when the robot changed since the last Run (the motion is kept)."""
-        if self.motion is not None and self.motion.robot != robot:
+        """Say so when the robot changed since the last Run (the motion is kept); an
+        equal robot (undo, the same file loaded again) takes the note back."""
+        if self.motion is None:
+            return
+        if self.motion.robot != robot:
             self.status.value = "<small>the robot changed since this run: press Run</small>"
+        else:
+            self.status.value = _ran(self.motion)
+
+    def _setting_changed(self, _: Any) -> None:
+        # A message shown by Run for a setting goes as soon as the settings are valid
+        # again, not at the next Run (the core names the first setting still wrong).
+        try:
+            self.simulation_settings()
+            wrong = None
+        except InvalidInputError as error:
+            wrong = error.field
+        for name, label in self.setting_errors.items():
+            if name != wrong:
+                label.clear()
+        self._on_change()
+
+
+def _ran(motion: Motion) -> str:
+    """The status line after a run."""
+    return f"<small>{motion.t.size} samples, {motion.method}</small>"

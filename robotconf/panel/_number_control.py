@@ -4,6 +4,13 @@ The number box is the authoritative value (it can hold anything the user types, 
 NaN, which the core then refuses with a message); the slider follows it when finite.
 Angles can be shown in degrees or radians: the control converts for display only, the
 core always receives radians.
+
+Numbers set by the panel are shown without float noise (:func:`display_number`: 90°,
+not 89.99999999999999), and the control keeps the exact value it was given: as long as
+the box still shows that number, :attr:`NumberControl.core_value` is the exact value, so a
+robot read back from untouched boxes is the robot that was loaded. Slider notches are
+snapped onto the step (a browser slider sends 7.1e-15 for 0). The step is 1° for angles
+(0.01 rad in radians) and a length step from the robot's size (see ``_ranges``).
 """
 
 from __future__ import annotations
@@ -16,14 +23,11 @@ import ipywidgets as widgets
 import numpy as np
 
 from ._callbacks import observe, on_click
+from ._clean_numbers import display_number, snap_to_step
 from ._errors_display import ErrorLabel
+from ._ranges import ANGLE_STEP, length_step, on_steps
 
 __all__ = ["NumberControl"]
-
-
-def _step(lo: float, hi: float) -> float:
-    span = hi - lo
-    return float(10.0 ** math.floor(math.log10(span / 200.0))) if span > 0 else 0.01
 
 
 class NumberControl:
@@ -36,7 +40,7 @@ class NumberControl:
     value : float
         Initial value in core units (radians for angles).
     lo, hi : float
-        Slider range in display units.
+        Slider range in display units (rounded outwards onto the step).
     angle : bool
         The value is an angle (shown in degrees when ``degrees``).
     degrees : bool
@@ -47,10 +51,17 @@ class NumberControl:
         ``False`` gives a compact number box only (DH table cells).
     on_change : callable, optional
         Called with this control after every user change.
+    length_step : float, optional
+        The step when the value is a length (default: from the range, see
+        :func:`~robotconf.panel._ranges.length_step`). Angles step by 1° (0.01 rad).
 
     Examples
     --------
-    >>> control = NumberControl("q", 0.0, -180, 180, angle=True)
+    >>> control = NumberControl("q", np.deg2rad(30.0), -180, 180, angle=True)
+    >>> control.box.value, control.step  # rad2deg gives 29.999999999999996
+    (30.0, 1.0)
+    >>> control.core_value == float(np.deg2rad(30.0))  # untouched: exactly what it was given
+    True
     >>> control.box.value = 90.0
     >>> round(control.core_value, 12)
     1.570796326795
@@ -72,18 +83,26 @@ class NumberControl:
         slider: bool = True,
         on_change: Callable[[NumberControl], None] | None = None,
         label_width: str = "28px",
+        length_step: float | None = None,
     ):
         self.angle = angle
         self.degrees = degrees
         self.on_change = on_change
         self._unit = unit
         self._quiet = False
+        self._length_step = length_step or _default_length_step(lo, hi)
+        # The exact core value last given, and the number shown for it: while the box
+        # still shows that number, the exact value is the control's value (no drift).
+        self._core = float(value)
+        self._shown = self._clean(self._to_display(self._core))
+        shown = self._shown
         self.name = widgets.Label(label, layout=widgets.Layout(width=label_width))
-        shown = self._to_display(value)
-        lo, hi = min(lo, shown), max(hi, shown)
-        step = _step(lo, hi)
+        step = self.step
+        lo, hi = (
+            on_steps(min(lo, shown), max(hi, shown), step) if math.isfinite(shown) else (lo, hi)
+        )
         self.slider = widgets.FloatSlider(
-            value=shown,
+            value=shown if math.isfinite(shown) else lo,
             min=lo,
             max=hi,
             step=step,
@@ -111,6 +130,11 @@ class NumberControl:
 
     # -- units --------------------------------------------------------------------------
 
+    @property
+    def step(self) -> float:
+        """The slider and arrow-key step in display units: 1° / 0.01 rad, or the length step."""
+        return ANGLE_STEP[self.degrees] if self.angle else self._length_step
+
     def _unit_text(self) -> str:
         if self.angle:
             return "deg" if self.degrees else "rad"
@@ -122,6 +146,9 @@ class NumberControl:
     def _to_core(self, shown: float) -> float:
         return float(np.deg2rad(shown)) if self.angle and self.degrees else float(shown)
 
+    def _clean(self, shown: float) -> float:
+        return display_number(shown, self.step)
+
     @property
     def value(self) -> float:
         """The typed value in display units (may be NaN: the core will refuse it)."""
@@ -129,12 +156,23 @@ class NumberControl:
 
     @property
     def core_value(self) -> float:
-        """The value in core units (radians for angles)."""
-        return self._to_core(self.value)
+        """The value in core units (radians for angles); exact while the box is untouched."""
+        shown = self.value
+        if shown == self._shown:
+            return self._core
+        return self._to_core(shown)
 
     def set_core_value(self, value: float) -> None:
-        """Show ``value`` (core units) without calling ``on_change``."""
-        self._set_shown(self._to_display(value))
+        """Show ``value`` (core units) without calling ``on_change``; a finite value is
+        valid, so an error shown for the old one goes."""
+        self._show_core(float(value))
+        if math.isfinite(value):
+            self.error.clear()
+
+    def _show_core(self, core: float) -> None:
+        self._core = core
+        self._shown = self._clean(self._to_display(core)) if math.isfinite(core) else core
+        self._set_shown(self._shown)
 
     def set_degrees(self, degrees: bool) -> None:
         """Switch an angle between degrees and radians; the core value is unchanged."""
@@ -145,7 +183,7 @@ class NumberControl:
         self.degrees = degrees
         self.unit_label.value = self._unit_text()
         self.set_range(self._to_display(lo), self._to_display(hi))
-        self._set_shown(self._to_display(core) if math.isfinite(core) else core)
+        self._show_core(core)
 
     def set_angle(self, angle: bool, lo: float, hi: float, unit: str = "") -> None:
         """Make this an angle or a length control (movement type changed), keeping the number."""
@@ -154,12 +192,20 @@ class NumberControl:
         self._unit = unit
         self.unit_label.value = self._unit_text()
         self.set_range(lo, hi)
-        self._set_shown(self._to_display(core) if math.isfinite(core) else core)
+        self._show_core(core)
+
+    def set_length_step(self, step: float) -> None:
+        """Use ``step`` for a length (a robot of another size was loaded)."""
+        self._length_step = step
+        self.set_range(self.slider.min, self.slider.max)
 
     # -- range --------------------------------------------------------------------------
 
     def set_range(self, lo: float, hi: float) -> None:
-        """Set the slider range (display units); the typed value is kept."""
+        """Set the slider range (display units, rounded outwards onto the step); the typed
+        value is kept."""
+        step = self.step
+        lo, hi = on_steps(lo, hi, step)
         self._quiet, quiet = True, self._quiet
         try:
             # Order matters: a new min above the old max would be refused.
@@ -167,7 +213,7 @@ class NumberControl:
                 self.slider.max, self.slider.min = hi, lo
             else:
                 self.slider.min, self.slider.max = lo, hi
-            self.slider.step = self.box.step = _step(lo, hi)
+            self.slider.step = self.box.step = step
             if math.isfinite(self.box.value):
                 self.slider.value = min(max(self.box.value, lo), hi)
         finally:
@@ -176,7 +222,7 @@ class NumberControl:
     def widen(self) -> None:
         """Double the slider range around its centre."""
         lo, hi = self.slider.min, self.slider.max
-        half = max(hi - lo, 1e-9)
+        half = max(hi - lo, self.step)
         middle = 0.5 * (lo + hi)
         self.set_range(middle - half, middle + half)
 
@@ -196,11 +242,15 @@ class NumberControl:
     def _slider_changed(self, change: dict[str, Any]) -> None:
         if self._quiet:
             return
+        shown = snap_to_step(change["new"], self.step)
+        if shown == self.value:
+            return  # the browser's rounding noise, not a move: nothing changed
         self._quiet = True
         try:
-            self.box.value = change["new"]
+            self.box.value = shown
         finally:
             self._quiet = False
+        self._core, self._shown = self._to_core(shown), shown
         self._notify()
 
     def _box_changed(self, change: dict[str, Any]) -> None:
@@ -218,3 +268,8 @@ class NumberControl:
     def disable(self, disabled: bool) -> None:
         """Grey the control out (a coordinate that a ``none``/``fixed`` module ignores)."""
         self.slider.disabled = self.box.disabled = self.widen_button.disabled = disabled
+
+
+def _default_length_step(lo: float, hi: float) -> float:
+    """A length step for a control that was not told one: from its range's half-width."""
+    return length_step(max(abs(lo), abs(hi)))

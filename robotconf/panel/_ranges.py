@@ -1,4 +1,15 @@
-"""Default slider ranges: wide enough for the robot at hand, always widenable by typing."""
+"""Default slider ranges and steps: wide enough for the robot at hand, widenable by typing.
+
+The step of a control depends on what it holds, never on its range, so every angle moves
+by the same notch and widening a slider does not change it:
+
+- an angle: 1° (0.01 rad when angles are shown in radians);
+- a length: a hundredth of the robot's size rounded down to a power of ten
+  (:func:`length_step`: 1 for the paper's robot, 0.01 for a UR5 in metres).
+
+A slider's ends are rounded outwards onto that step (:func:`on_steps`), so its notches
+fall on round numbers (0, 1°, 2° …) whatever the joint limits.
+"""
 
 from __future__ import annotations
 
@@ -8,11 +19,23 @@ from typing import Any
 import numpy as np
 
 from ..kinematics import JOINT_UNITS
+from ._clean_numbers import display_number
 
-__all__ = ["length_scale", "nice_ceiling", "q_range", "q_display", "joint_limits"]
+__all__ = [
+    "length_scale",
+    "nice_ceiling",
+    "q_range",
+    "q_display",
+    "joint_limits",
+    "ANGLE_STEP",
+    "length_step",
+    "on_steps",
+]
 
 #: The units a coordinate has (a link's ``unit``): an angle or a length.
 ANGLE_UNIT, LENGTH_UNIT = JOINT_UNITS["revolute"], JOINT_UNITS["prismatic"]
+#: The step of an angle control, by "shown in degrees": 1° or 0.01 rad.
+ANGLE_STEP = {True: 1.0, False: 0.01}
 
 
 def nice_ceiling(value: float) -> float:
@@ -42,6 +65,36 @@ def length_scale(robot: Any) -> float:
     from ..kinematics import characteristic_length
 
     return nice_ceiling(characteristic_length(robot))
+
+
+def length_step(scale: float) -> float:
+    """The step of a length control: ``scale / 100`` rounded down to a power of ten.
+
+    ``scale`` is the slider half-range (:func:`length_scale`); a power of ten keeps typed
+    and stepped values round.
+
+    >>> length_step(100.0), length_step(200.0), length_step(2.0), length_step(0.5)
+    (1.0, 1.0, 0.01, 0.001)
+    """
+    if not math.isfinite(scale) or scale <= 0:
+        return 0.01
+    return float(10.0 ** (math.floor(math.log10(scale) + 1e-12) - 2))
+
+
+def on_steps(lo: float, hi: float, step: float) -> tuple[float, float]:
+    """``(lo, hi)`` rounded outwards onto multiples of ``step``.
+
+    A slider's notches are ``lo + k·step``; with ``lo`` on the step they are round numbers.
+
+    >>> on_steps(-57.29577951308232, 114.59155902616465, 1.0)
+    (-58.0, 115.0)
+    >>> on_steps(-100.0, 100.0, 1.0)
+    (-100.0, 100.0)
+    """
+    # The tolerance keeps a bound that is a multiple up to noise (225.00000000000003).
+    low = math.floor(lo / step + 1e-9) * step
+    high = math.ceil(hi / step - 1e-9) * step
+    return display_number(low, step), display_number(high, step)
 
 
 def joint_limits(robot: Any) -> np.ndarray | None:

@@ -12,6 +12,7 @@ from .._validation import check_finite_number
 from ._callbacks import observe
 from ._errors_display import ErrorLabel
 from ._number_control import NumberControl
+from ._ranges import length_step
 
 __all__ = ["RobotExtras"]
 
@@ -60,6 +61,7 @@ class RobotExtras:
             self.set_count(n, keep_all=False)
             self.active.value = active
             for control, value in zip(self.point, point, strict=True):
+                control.set_length_step(length_step(scale))
                 control.set_range(-scale, scale)
                 control.set_core_value(float(value))
         finally:

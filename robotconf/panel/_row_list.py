@@ -61,6 +61,7 @@ class RowList:
         self.rows = [
             self._row(link, None if limits is None else limits[i]) for i, link in enumerate(links)
         ]
+        self.error.clear()  # a message about the old rows is stale now
         self._refresh()
 
     def _refresh(self) -> None:

@@ -2,13 +2,18 @@
 
 Number of modules → for each module its movement type, geometric parameters and
 coordinate → the end-effector → a summary. Each step has a one-line explanation and the
-module's transfer matrix as a formula (from the core's symbolic table). "Finish" hands
-the robot to the list editor, so both modes end in the same robot.
+module's transfer matrix as a formula (from the core's symbolic table): the type step
+shows it with symbols a_x, a_y, a_z; the offset and coordinate steps with the offsets as
+typed, and below it the numeric matrix at the typed q. Both follow every field as it
+changes. The robot built so far is previewed (``on_preview``, the panel's 3D scene), and
+"Cancel" leaves without changing the robot. "Finish" hands the robot to the list editor,
+so both modes end in the same robot.
 """
 
 from __future__ import annotations
 
 import html
+import math
 from collections.abc import Callable, Iterator
 from typing import Any
 
@@ -30,8 +35,9 @@ from ._callbacks import observe, on_click
 from ._errors_display import ErrorLabel
 from ._matrices_view import end_effector_text, math_html
 from ._module_row import KIND_OPTIONS
+from ._monospace import preformatted
 from ._number_control import NumberControl
-from ._ranges import q_display
+from ._ranges import ANGLE_UNIT, length_step, q_display
 
 __all__ = ["Wizard", "KIND_EXPLANATIONS"]
 
@@ -76,13 +82,43 @@ def _formula(kind: str, index: int, a: Any = None) -> str:
     return math_html(f"A_{{{index}}} = {sympy.latex(module_matrix(kind, q, offsets))}")
 
 
-class _ModuleAnswers:
-    """The answers about one module."""
+def _numeric(module: Module, index: int, degrees: bool) -> str:
+    """The module's matrix at its typed q, as aligned text (q in the unit it was typed in)."""
+    from ..teaching import format_number, matrix_grid
 
-    def __init__(self, degrees: bool, scale: float):
+    if module.is_joint:
+        q = format_number(module.q, 6)
+        if module.unit == ANGLE_UNIT:
+            q = f"{format_number(math.degrees(module.q), 6)}°" if degrees else f"{q} rad"
+        title = f"A_{index} at q{index} = {q}:"
+    else:
+        title = f"A_{index} =  (q{index} is ignored)"
+    return preformatted("\n".join([title, *matrix_grid(module.matrix(), False, 4)]))
+
+
+class _ModuleAnswers:
+    """The answers about one module; ``on_change`` after a user edit of any of them."""
+
+    def __init__(self, degrees: bool, scale: float, on_change: Callable[[Any], None]):
         self.kind = widgets.Dropdown(options=KIND_OPTIONS, value="Rz", description="type")
-        self.offsets = [NumberControl(n, 0.0, -scale, scale, slider=False) for n in MODULE_OFFSETS]
-        self.q = NumberControl("q", 0.0, -180, 180, angle=True, degrees=degrees, slider=False)
+        step = length_step(scale)
+        self.offsets = [
+            NumberControl(
+                n, 0.0, -scale, scale, slider=False, on_change=on_change, length_step=step
+            )
+            for n in MODULE_OFFSETS
+        ]
+        self.q = NumberControl(
+            "q",
+            0.0,
+            -180,
+            180,
+            angle=True,
+            degrees=degrees,
+            slider=False,
+            on_change=on_change,
+            length_step=step,
+        )
 
     def module(self) -> Module:
         ax, ay, az = (c.core_value for c in self.offsets)
@@ -100,6 +136,13 @@ class Wizard:
         Ask for angles in degrees.
     scale : float
         Typical length, for the number boxes' steps.
+    formulas : bool
+        Show the symbolic A_i (sympy); ``False`` skips it.
+    on_preview : callable, optional
+        Receives the robot built so far after every step and field change, or ``None``
+        when there is nothing to show yet (the first question).
+    on_cancel : callable, optional
+        Called by the Cancel button (without it, the button is disabled).
 
     Examples
     --------
@@ -108,11 +151,15 @@ class Wizard:
     >>> wizard.count.value = 1
     >>> wizard.next()  # → type of module 1
     >>> wizard.answers[0].kind.value = "Tz"
-    >>> for _ in range(4):  # geometry, coordinate, end-effector, summary
+    >>> wizard.next()  # geometry: the numeric A_1 follows the boxes
+    >>> wizard.answers[0].offsets[2].box.value = 20.0
+    >>> "[ 1  0  0   0 ]" in wizard.preview.value, "20 ]" in wizard.preview.value
+    (True, True)
+    >>> for _ in range(3):  # coordinate, end-effector, summary
     ...     wizard.next()
     >>> wizard.next()  # Finish
     >>> built[0].modules
-    (Module('Tz'),)
+    (Module('Tz', a=(0.0, 0.0, 20.0)),)
     """
 
     def __init__(
@@ -121,8 +168,11 @@ class Wizard:
         degrees: bool = True,
         scale: float = 100.0,
         formulas: bool = True,
+        on_preview: Callable[[Robot | None], None] | None = None,
+        on_cancel: Callable[[], None] | None = None,
     ):
         self._on_finish = on_finish
+        self._on_preview = on_preview
         self.degrees = degrees
         self._scale = scale
         self.formulas = formulas
@@ -131,18 +181,36 @@ class Wizard:
         )
         self.answers: list[_ModuleAnswers] = []
         self.end_effector = [
-            NumberControl(n, 0.0, -scale, scale, slider=False) for n in ("Px", "Py", "Pz")
+            NumberControl(
+                n,
+                0.0,
+                -scale,
+                scale,
+                slider=False,
+                on_change=self._field_changed,
+                length_step=length_step(scale),
+            )
+            for n in ("Px", "Py", "Pz")
         ]
         self.step = 0
         self.title = widgets.HTML()
         self.explanation = widgets.HTML()
         self.formula = widgets.HTMLMath()
+        self.preview = widgets.HTML()
         self.body = widgets.VBox()
         self.error = ErrorLabel()
         self.back_button = widgets.Button(description="Back", icon="arrow-left")
         self.next_button = widgets.Button(description="Next", icon="arrow-right")
+        self.cancel_button = widgets.Button(
+            description="Cancel",
+            icon="times",
+            tooltip="leave the guided mode; the robot stays as it was",
+            disabled=on_cancel is None,
+        )
         on_click(self.back_button, self.error, self.back)
         on_click(self.next_button, self.error, self.next)
+        if on_cancel is not None:
+            on_click(self.cancel_button, self.error, on_cancel)
         self.robot: Robot | None = None
         self.widget = widgets.VBox(
             [
@@ -150,8 +218,9 @@ class Wizard:
                 self.explanation,
                 self.body,
                 self.formula,
+                self.preview,
                 self.error.widget,
-                widgets.HBox([self.back_button, self.next_button]),
+                widgets.HBox([self.back_button, self.next_button, self.cancel_button]),
             ],
             layout=widgets.Layout(border="1px solid #ccd", padding="6px"),
         )
@@ -170,7 +239,7 @@ class Wizard:
 
     def _fit_answers(self) -> None:
         while len(self.answers) < self.count.value:
-            answers = _ModuleAnswers(self.degrees, self._scale)
+            answers = _ModuleAnswers(self.degrees, self._scale, self._field_changed)
             observe(answers.kind, self.error, lambda _: self._show())
             self.answers.append(answers)
         del self.answers[self.count.value :]
@@ -182,6 +251,8 @@ class Wizard:
         self.back_button.disabled = self.step == 0
         self.next_button.description = "Finish" if part == "summary" else "Next"
         self.formula.value = ""
+        self.preview.value = ""
+        self._preview()
         if part == "count":
             self._say("How many modules (kinematic couples) does the robot have?", [self.count])
             return
@@ -198,7 +269,7 @@ class Wizard:
                     "frame? These are the offsets a = (ax, ay, az)."
                 )
                 self._say(text, [c.widget for c in answers.offsets])
-                self._show_formula(kind, i + 1, [c.core_value for c in answers.offsets])
+                self._show_matrices(i)
             else:
                 joint_type = kind_joint_type(kind)
                 unit = _MOTIONS[joint_type][1] if joint_type in _MOTIONS else "ignored by this type"
@@ -206,7 +277,7 @@ class Wizard:
                 answers.q.set_angle(angle, -180, 180, unit=label)
                 text = f"Module {i + 1} ({kind}): its coordinate q, {unit} (0 = parking position)."
                 self._say(text, [answers.q.widget])
-                self._show_formula(kind, i + 1, [c.core_value for c in answers.offsets])
+                self._show_matrices(i)
             return
         if part == "end_effector":
             text = "The end-effector point P in the last module's frame: p_EE = M_n·[P, 1]ᵀ."
@@ -214,7 +285,7 @@ class Wizard:
             return
         robot = self._build()
         text = "" if robot is None else f"{robot}\n\n{end_effector_text(robot)}"
-        summary = f"<pre>{html.escape(text)}</pre>" if text else ""
+        summary = preformatted(text) if text else ""
         self._say("The robot you described (Finish loads it into the module list):", [])
         self.body.children = (widgets.HTML(summary),)
 
@@ -230,18 +301,60 @@ class Wizard:
         except InvalidInputError:
             self.formula.value = ""  # a bad offset: the error label says why
 
+    def _show_matrices(self, i: int) -> None:
+        """A_i with the offsets as typed, and its numbers at the typed q."""
+        answers = self.answers[i]
+        self._show_formula(answers.kind.value, i + 1, [c.core_value for c in answers.offsets])
+        try:
+            self.preview.value = _numeric(answers.module(), i + 1, self.degrees)
+        except InvalidInputError:
+            self.preview.value = ""  # a bad value: its own label says why
+
+    def _field_changed(self, _: Any = None) -> None:
+        for _field, control in self._step_controls():
+            if math.isfinite(control.core_value):
+                control.error.clear()  # refused by Next, fixed since: the message goes
+        part, i = self._steps()[self.step]
+        if part in ("a", "q") and i < len(self.answers):
+            self._show_matrices(i)
+        self._preview()
+
+    def _preview(self) -> None:
+        """Hand the robot built so far to ``on_preview`` (nothing while a value is bad)."""
+        if self._on_preview is None:
+            return
+        part, i = self._steps()[self.step]
+        if part == "count" or not self.answers:
+            self._on_preview(None)
+            return
+        count = i + 1 if part in ("type", "a", "q") else len(self.answers)
+        try:
+            modules = [answers.module() for answers in self.answers[:count]]
+            point = (
+                [c.core_value for c in self.end_effector]
+                if part in ("end_effector", "summary")
+                else (0.0, 0.0, 0.0)
+            )
+            robot = Robot(modules, end_effector=point)
+        except InvalidInputError:
+            return  # the field's own label says why; the last preview stays
+        self._on_preview(robot)
+
     # -- navigation ---------------------------------------------------------------------
 
-    def _check(self) -> bool:
+    def _step_controls(self) -> list[tuple[str, NumberControl]]:
+        """``(field, control)`` for the number boxes of the step shown."""
         part, i = self._steps()[self.step]
-        controls: list[tuple[str, NumberControl]] = []
         if part == "a":
-            controls = list(zip(MODULE_OFFSETS, self.answers[i].offsets, strict=True))
-        elif part == "q":
-            controls = [("q", self.answers[i].q)]
-        elif part == "end_effector":
-            controls = list(zip(("Px", "Py", "Pz"), self.end_effector, strict=True))
-        for field, control in controls:
+            return list(zip(MODULE_OFFSETS, self.answers[i].offsets, strict=True))
+        if part == "q":
+            return [("q", self.answers[i].q)]
+        if part == "end_effector":
+            return list(zip(("Px", "Py", "Pz"), self.end_effector, strict=True))
+        return []
+
+    def _check(self) -> bool:
+        for field, control in self._step_controls():
             try:
                 check_finite_number(control.core_value, field)
                 control.error.clear()
@@ -292,6 +405,7 @@ class Wizard:
         self.degrees = degrees
         for answers in self.answers:
             answers.q.set_degrees(degrees)
+        self._field_changed()  # the preview's q in the new unit
 
     def error_items(self) -> Iterator[tuple[str, ErrorLabel]]:
         """``(key, label)``: ``wizard`` and ``wizard.<field>`` of the visible step."""
