@@ -10,7 +10,10 @@ Symbolic chain (an independent second implementation of the matrices, in sympy)
     :func:`elementary_matrix`, :func:`dh_factors`, :func:`exact_number`
 Expected answers and the checker
     :func:`expected_matrix`, :class:`ExpectedMatrix`, :func:`check_matrix`,
-    :func:`assert_matrix`, :class:`MatrixCheck`
+    :func:`assert_matrix`, :class:`MatrixCheck`. Answers are untrusted: the checker
+    decides by numbers at seeded random points, refuses entries that are not real, and
+    does algebra only within a small budget, so any answer is judged in ≤ 2 s for a 4×4
+    matrix (see :func:`check_matrix`, Notes).
 Student text (a whitelist parser: nothing is evaluated)
     :func:`parse_expression`, :func:`parse_matrix`, :class:`ParserLimits`
 

@@ -29,10 +29,14 @@ class MatrixCheck:
         ``"transposed_matrix"``, ``"rotation_direction"``, ``"sign_error"``,
         ``"offset_after_rotation"``, ``"missing_offset"``, ``"dh_convention"``,
         ``"degrees_as_radians"``, ``"radians_as_degrees"``, ``"row_swap"``,
-        ``"column_swap"``, ``"swapped_d_a"``, ``"shape"``, ``"no_answer"``.
+        ``"column_swap"``, ``"swapped_d_a"``, ``"shape"``, ``"no_answer"``,
+        ``"too_complicated"``.
     student : sympy.Matrix or None
         The student's matrix as understood; ``None`` when there is no answer yet.
     expected : ExpectedMatrix
+    unchecked_entries : list of (int, int)
+        0-based entries too complicated to check within the checker's budget (neither
+        right nor known to be wrong; ``ok`` is False while there are any).
     """
 
     ok: bool
@@ -42,6 +46,7 @@ class MatrixCheck:
     student: Any
     expected: ExpectedMatrix
     reveal: bool = field(default=True, repr=False)
+    unchecked_entries: list[tuple[int, int]] = field(default_factory=list)
 
     def __bool__(self) -> bool:
         return self.ok
@@ -52,6 +57,9 @@ class MatrixCheck:
             return f"{name}: correct."
         count = len(self.wrong_entries)
         head = f"{name}: {count} wrong entr{'y' if count == 1 else 'ies'}." if count else f"{name}:"
+        if self.unchecked_entries:
+            unchecked = len(self.unchecked_entries)
+            head += f" {unchecked} entr{'y' if unchecked == 1 else 'ies'} too complicated to check."
         return "\n".join([head, *(f"- {hint}" for hint in self.hints)])
 
     def __repr__(self) -> str:
@@ -60,6 +68,7 @@ class MatrixCheck:
     def _repr_html_(self) -> str:
         rows = []
         wrong = set(self.wrong_entries)
+        unchecked = set(self.unchecked_entries)
         student = self.student
         if student is not None:
             for r in range(student.rows):
@@ -74,6 +83,12 @@ class MatrixCheck:
                             f'<td style="background:#fdd;border:2px solid #c00" '
                             f'title="{html.escape(tip)}">✗ {text}</td>'
                         )
+                    elif (r, c) in unchecked:
+                        tip = f"entry ({r + 1},{c + 1}) is too complicated to check"
+                        cells.append(
+                            f'<td style="background:#ffe9b3;border:2px solid #b80" '
+                            f'title="{html.escape(tip)}">? {text}</td>'
+                        )
                     else:
                         cells.append(f'<td style="background:#efe">{text}</td>')
                 rows.append("<tr>" + "".join(cells) + "</tr>")
@@ -87,11 +102,31 @@ class MatrixCheck:
         )
 
 
-def show_entry(entry: Any) -> str:
+#: Entries with more nodes than this print unsorted (sorting a huge sum is slow).
+_SORTED_PRINT_NODES = 200
+#: Entries with more nodes than this are not printed at all, only described.
+_PRINTED_NODES = 2000
+
+
+def show_entry(entry: Any, limit: int = 300) -> str:
+    """An entry as hints quote it: numbers rounded, long formulas cut at ``limit``.
+
+    >>> import sympy
+    >>> show_entry(sympy.Float(0.70710678)), show_entry(sympy.Symbol("q1") * 2)
+    ('0.7071', '2*q1')
+    """
     import sympy
 
     from ._formatting import format_number
 
     if isinstance(entry, sympy.Float) or (entry.is_Number and not entry.is_Rational):
-        return format_number(float(entry), 4)
-    return sympy.sstr(entry)
+        text = format_number(float(entry), 4)
+    else:
+        count, stack = 0, [entry]
+        while stack and count <= _PRINTED_NODES:
+            count += 1
+            stack.extend(stack.pop().args)
+        if count > _PRINTED_NODES:
+            return f"a formula of over {_PRINTED_NODES} parts"
+        text = sympy.sstr(entry, order="none" if count > _SORTED_PRINT_NODES else None)
+    return text if len(text) <= limit else text[: limit - 3] + "..."

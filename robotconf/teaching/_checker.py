@@ -1,9 +1,12 @@
 """The homework checker: compare a student's matrix with the expected one and say why not.
 
-Two entries are equal when exact simplification proves their difference zero, or when
-they agree at every one of ``samples`` random points (the symbols get random values)
-within ``tol``. Wrong entries are then explained by rebuilding the usual mistakes (see
-:mod:`robotconf.teaching._mistakes`) and looking for the one the student's answer matches.
+Student answers are untrusted text graded on the teacher's machine, so every step is
+bounded (see :func:`check_matrix`, "Budget"): numbers decide first (both matrices at
+``samples`` seeded random points, in complex arithmetic:
+:mod:`robotconf.teaching._numeric_judge`); only an entry the numbers cannot decide gets
+symbolic work, and only within :mod:`robotconf.teaching._budget_rules`. Wrong entries are
+then explained by rebuilding the usual mistakes (see :mod:`robotconf.teaching._mistakes`)
+and looking for the one the student's answer matches, numerically too.
 """
 
 from __future__ import annotations
@@ -15,10 +18,20 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number, check_integer
+from ._budget_rules import Allowance
 from ._check_result import MatrixCheck
-from ._expected import ExpectedMatrix, as_expected, evaluate, sample_points
-from ._hints import NO_ANSWER, close, entries_text, entry_hints, explain, shape_hint
+from ._expected import ExpectedMatrix, as_expected, sample_points
+from ._hints import NO_ANSWER, entries_text, entry_hints, explain, shape_hint
 from ._mistakes import context_candidates, generic_candidates
+from ._numeric_eval import MAX_EVALUATED_NODES
+from ._numeric_judge import (
+    MAX_ANSWER_NODES,
+    TOO_LARGE,
+    WRONG,
+    Judgement,
+    check_size,
+    judge,
+)
 from ._student_parser import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -64,8 +77,11 @@ def _parse_text(text: str, table: dict[str, Any], limits: ParserLimits, scalar: 
             return sympy.Matrix([[parse_expression(text, table.values(), limits)]])
         try:  # "(2*sin(q2))" is a formula, "((1,),)" a matrix
             return sympy.Matrix([[parse_expression(text, table.values(), limits)]])
-        except InvalidInputError:
-            pass
+        except InvalidInputError as as_formula:
+            try:
+                return parse_matrix(text, table.values(), limits)
+            except InvalidInputError:
+                raise as_formula from None  # it was meant as a formula: say what is wrong
     return parse_matrix(text, table.values(), limits)
 
 
@@ -109,8 +125,21 @@ def _student_matrix(
                 for r, row in enumerate(rows)
             ]
         )
+    total = 0
+    for r in range(matrix.rows):  # before sympy itself walks (recursively) over them
+        for c in range(matrix.cols):
+            total += check_size(matrix[r, c], f"student[{r}][{c}]", f"entry ({r + 1},{c + 1})")
+    if total > MAX_ANSWER_NODES:
+        raise InvalidInputError(
+            "student",
+            f"{total} parts",
+            f"at most {MAX_ANSWER_NODES} parts: simplify the entries first",
+            problem="the answer is too large to check:",
+        )
     # Same-named symbols are the same symbol, whatever assumptions the student used.
-    renames = {s: table[s.name] for s in matrix.free_symbols if s.name in table}
+    renames = {
+        s: table[s.name] for s in matrix.free_symbols if s.name in table and s != table[s.name]
+    }
     return matrix.xreplace(renames) if renames else matrix
 
 
@@ -143,12 +172,19 @@ def _fit_shapes(student: Any, expected: Any) -> Any:
 
 
 def _compare(
-    matrix: Any, reference: ExpectedMatrix, tol: float, samples: int, seed: int
-) -> tuple[dict[str, np.ndarray], int, np.ndarray, np.ndarray, set[tuple[int, int]]]:
-    """Sample both matrices (same shape) and find the wrong entries.
+    matrix: Any,
+    reference: ExpectedMatrix,
+    tol: float,
+    samples: int,
+    seed: int,
+    transposed: bool = False,
+) -> tuple[dict[str, np.ndarray], int, Judgement, set[tuple[int, int]], dict[tuple[int, int], str]]:
+    """Sample both matrices (same shape), judge every entry, decide the undecided ones.
 
-    Returns the sample points, their number K, the student's and the expected values
-    (shape (K, rows, cols)) and the wrong entries (0-based).
+    Returns the sample points, their number K, the numeric judgement (values of shape
+    (K, rows, cols)), the wrong entries (0-based) and the entries too complicated to
+    check, each with the reason. ``transposed``: ``matrix`` is the student's transposed
+    (for naming entries in errors).
     """
     expected_m = reference.matrix
     names = sorted(
@@ -157,45 +193,41 @@ def _compare(
     )
     k = int(samples) if names else 1
     env = sample_points(names, k, seed)
-    s_values = _values(matrix, env, k)
-    e_values = _values(expected_m, env, k)
-    right = close(s_values, e_values, tol)
-    wrong = set()
-    for r in range(matrix.rows):
-        for c in range(matrix.cols):
-            if right[r, c]:
-                continue
-            undefined = np.isnan(s_values[:, r, c]).any() or np.isnan(e_values[:, r, c]).any()
-            if not _proven_equal(matrix[r, c], expected_m[r, c], full=bool(undefined)):
+
+    def field_of(r: int, c: int) -> str:
+        return f"student[{c}][{r}]" if transposed else f"student[{r}][{c}]"
+
+    judgement = judge(matrix, expected_m, env, k, tol, field_of)
+    wrong: set[tuple[int, int]] = set()
+    unchecked: dict[tuple[int, int], str] = {}
+    allowance = Allowance()
+    for (r, c), verdict in sorted(judgement.verdicts.items()):
+        if verdict == WRONG:
+            wrong.add((r, c))
+        elif verdict == TOO_LARGE:
+            unchecked[(r, c)] = f"it has more than {MAX_EVALUATED_NODES} parts"
+        else:  # undefined at some points: algebra decides, within the budget
+            equal, why_not = allowance.verdict(matrix[r, c], expected_m[r, c])
+            if equal is None:
+                unchecked[(r, c)] = why_not or "it is over the checker's budget"
+            elif not equal:
                 wrong.add((r, c))
-    return env, k, s_values, e_values, wrong
+    return env, k, judgement, wrong, unchecked
 
 
-# -- comparison -----------------------------------------------------------------------
-
-
-def _values(matrix: Any, env: dict[str, np.ndarray], k: int) -> np.ndarray:
-    out = np.empty((k, matrix.rows, matrix.cols))
-    for r in range(matrix.rows):
-        for c in range(matrix.cols):
-            out[:, r, c] = evaluate(matrix[r, c], env, k)
-    return out
-
-
-def _proven_equal(a: Any, b: Any, full: bool) -> bool:
-    import sympy
-
-    difference = a - b
-    if difference == 0:
-        return True
-    if sympy.count_ops(difference) > 300:
-        return False
-    try:
-        if sympy.expand(sympy.expand_trig(difference)) == 0:
-            return True
-        return bool(full and sympy.simplify(difference) == 0)
-    except (TypeError, ValueError, RecursionError):  # pragma: no cover - sympy internals
-        return False
+def _unchecked_hints(unchecked: dict[tuple[int, int], str]) -> list[str]:
+    entries = sorted(unchecked)
+    hints = [
+        f"entry ({r + 1},{c + 1}) is too complicated to check: simplify it first "
+        f"({unchecked[(r, c)]})."
+        for r, c in entries[:4]
+    ]
+    if len(entries) > 4:
+        hints.append(
+            f"Entries {entries_text(entries[4:])} are too complicated to check as well: "
+            "simplify them first."
+        )
+    return hints
 
 
 def check_matrix(
@@ -241,12 +273,44 @@ def check_matrix(
     Returns
     -------
     MatrixCheck
+        Not ok, with the entry in ``unchecked_entries`` and a hint "too complicated to
+        check: simplify it first", for an entry the budget below cannot judge.
 
     Raises
     ------
     InvalidInputError
         For malformed student input (ragged rows, text outside the whitelist, NaN) or a
-        bad ``tol``/``samples``.
+        bad ``tol``/``samples``; naming the entry (field ``"student[r][c]"``, 0-based) for
+        an entry that is not real (``I``, ``sqrt(-1)``, ``(-8)**(1/3)``, ``sqrt(q1)`` at a
+        negative sample of ``q1``: entries must be real), holds a number over about 1233
+        digits or an infinity, uses a function the checker cannot evaluate (``factorial``,
+        ``Integral``), or, as a sympy object, is nested over 100 levels deep or has over
+        20 000 parts (40 000 for the whole answer).
+
+    Notes
+    -----
+    **Budget.** An answer cannot make the check hang or run out of memory:
+
+    1. Numbers first. Both sides are evaluated at the sample points by a numpy walk of
+       the expression tree (linear in its size, no symbolic work). An entry is right when
+       it agrees everywhere, wrong as soon as it differs at one point (or overflows to
+       infinity where the expected value is finite): ``sin(1000000*q1)`` is simply wrong.
+    2. Only an entry undefined (NaN) at some points goes to
+       ``expand(expand_trig(student − expected))``, and only when one walk of its tree
+       shows the work is small: powers of formulas with exponent ≤ 8
+       (``MAX_EXPAND_EXPONENT``); in ``sin``/``cos`` integer multiples adding up to ≤ 8
+       (``MAX_TRIG_MULTIPLE``), ``tan`` of a single angle; ≤ 200 nodes, depth ≤ 20, only
+       ``+ * **``, numbers, symbols, ``sin``, ``cos``, ``tan``; an estimated ≤ 200
+       expanded terms per entry (``MAX_EXPANDED_TERMS``) and ≤ 300 for the whole answer
+       (``MAX_CHECK_TERMS``), for at most 4 entries (``MAX_SYMBOLIC_ENTRIES``); all in
+       :mod:`robotconf.teaching._budget_rules`. Anything else is "too complicated to
+       check".
+    3. Hints compare numbers only (candidate mistakes at the same points).
+
+    Worst case: ≤ 2 s per call for a 4×4 answer (typed text up to ``max_length``, or
+    sympy objects within the caps above) on a 2-core machine; ``benchmarks/
+    bench_checker.py`` times correct, wrong and hostile answers (worst measured about
+    0.6 s).
 
     Examples
     --------
@@ -281,13 +345,20 @@ def check_matrix(
     if matrix.shape != expected_m.shape:
         transposed_wrong = None
         if matrix.shape == expected_m.T.shape:  # only a non-square matrix gets here
-            transposed_wrong = _compare(matrix.T, reference, tol, samples, seed)[-1]
+            *_, still_wrong, unclear = _compare(matrix.T, reference, tol, samples, seed, True)
+            transposed_wrong = still_wrong | set(unclear)
         hint = shape_hint(matrix.shape, expected_m, transposed_wrong)
         code = "shape" if transposed_wrong is None else "transposed_matrix"
         return MatrixCheck(False, [], [hint], [code], matrix, reference, reveal)
-    env, k, s_values, e_values, wrong = _compare(matrix, reference, tol, samples, seed)
-    if not wrong:
+    env, k, judgement, wrong, unchecked = _compare(matrix, reference, tol, samples, seed)
+    if not wrong and not unchecked:
         return MatrixCheck(True, [], [], [], matrix, reference, reveal)
+    if not wrong:
+        only = _unchecked_hints(unchecked)
+        return MatrixCheck(
+            False, [], only, ["too_complicated"], matrix, reference, reveal, sorted(unchecked)
+        )
+    s_values, e_values = judgement.student, judgement.expected
     candidates = context_candidates(reference, env, k) + generic_candidates(e_values)
     full, partial = explain(candidates, wrong, s_values, e_values, tol)
     hints: list[str] = []
@@ -307,9 +378,14 @@ def check_matrix(
     )
     hints += more
     codes += more_codes
+    if unchecked:
+        hints += _unchecked_hints(unchecked)
+        codes.append("too_complicated")
     if full:
         hints.append(f"Wrong entries: {entries_text(wrong)}.")
-    return MatrixCheck(False, sorted(wrong), hints, codes, matrix, reference, reveal)
+    return MatrixCheck(
+        False, sorted(wrong), hints, codes, matrix, reference, reveal, sorted(unchecked)
+    )
 
 
 def assert_matrix(student: Any, expected: Any, **options: Any) -> MatrixCheck:

@@ -5,13 +5,13 @@ A bare matrix only allows context-free hints (a transposed block, a swapped row)
 ``p_EE``) and at which configuration, so the checker can rebuild the usual mistakes
 (wrong multiplication order, the other DH convention, degrees, …) and recognise them.
 
-This module also evaluates sympy expressions numerically at random points by walking the
-expression tree with numpy (no code generation), and samples those points.
+This module also samples random points and evaluates sympy expressions there (a numpy
+walk of the expression tree, no code generation: see
+:mod:`robotconf.teaching._numeric_eval`).
 """
 
 from __future__ import annotations
 
-import math
 from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
@@ -224,7 +224,8 @@ def evaluate(expr: sympy.Expr, env: dict[str, np.ndarray], samples: int) -> np.n
     Returns
     -------
     ndarray, shape (K,)
-        ``nan`` where the expression is undefined (e.g. ``sqrt`` of a negative number).
+        ``nan`` where the expression is undefined or not real (e.g. ``sqrt`` of a
+        negative number).
 
     Examples
     --------
@@ -233,45 +234,6 @@ def evaluate(expr: sympy.Expr, env: dict[str, np.ndarray], samples: int) -> np.n
     >>> evaluate(2 * sympy.cos(q1), {"q1": np.array([0.0, np.pi])}, 2)
     array([ 2., -2.])
     """
-    cache: dict[Any, np.ndarray] = {}
-    with np.errstate(all="ignore"):
-        out = _walk(expr, env, samples, cache)
-    return np.where(np.isfinite(out), out, np.nan)
+    from ._numeric_eval import complex_values, real_or_nan
 
-
-def _walk(expr: Any, env: dict, k: int, cache: dict) -> np.ndarray:
-    import sympy
-
-    if expr in cache:
-        return cache[expr]
-    if expr.is_Number or expr.is_NumberSymbol:
-        try:
-            value = float(expr)
-        except (OverflowError, TypeError):
-            value = math.nan
-        result = np.full(k, value)
-    elif expr.is_Symbol:
-        if expr.name not in env:
-            raise InvalidInputError("symbols", expr.name, ", ".join(env), problem="no value for")
-        result = np.asarray(env[expr.name], dtype=float)
-    elif expr.is_Add:
-        result = sum((_walk(a, env, k, cache) for a in expr.args), np.zeros(k))
-    elif expr.is_Mul:
-        result = np.ones(k)
-        for a in expr.args:
-            result = result * _walk(a, env, k, cache)
-    elif expr.is_Pow:
-        result = np.power(_walk(expr.base, env, k, cache), _walk(expr.exp, env, k, cache))
-    elif isinstance(expr, (sympy.sin, sympy.cos, sympy.tan)):
-        function = {sympy.sin: np.sin, sympy.cos: np.cos, sympy.tan: np.tan}[type(expr)]
-        result = function(_walk(expr.args[0], env, k, cache))
-    else:  # a teacher's reference may hold other functions: evaluate point by point
-        symbols = list(expr.free_symbols)
-        result = np.array(
-            [
-                complex(expr.evalf(subs={s: float(env[s.name][i]) for s in symbols})).real
-                for i in range(k)
-            ]
-        )
-    cache[expr] = result
-    return result
+    return real_or_nan(complex_values(expr, env, samples))

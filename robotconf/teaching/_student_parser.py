@@ -13,9 +13,13 @@ is built by hand:
 - list brackets for a matrix: ``[[row], [row], …]`` (``Matrix([[…]])`` as printed by
   sympy is accepted too), or ``[a, b, c]`` for a column.
 
-Input length, nesting depth, the number of digits in a literal and the size of exponents
-are capped, so ``9**9**9`` or a megabyte of text is refused at once. Every refusal is an
-:class:`~robotconf.InvalidInputError` quoting the offending part.
+Input length, nesting depth, the number of digits in a literal (as typed, and as a value:
+a hexadecimal ``0xfff…`` counts too), the size of exponents and of every number the
+formula builds (:data:`MAX_NUMBER_BITS`) are capped, so ``9**9**9``, ``1e300*1e300*…`` or
+a megabyte of text is refused at once. Every refusal is an
+:class:`~robotconf.InvalidInputError` quoting the offending part. Sums and products are
+built in one sympy call each and ``sin``/``cos``/``tan`` of a formula are kept as typed
+(not rewritten), so even the longest allowed text parses in a fraction of a second.
 """
 
 from __future__ import annotations
@@ -34,6 +38,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = [
     "DEFAULT_SYMBOL_NAMES",
+    "MAX_NUMBER_BITS",
     "ParserLimits",
     "parse_expression",
     "parse_matrix",
@@ -68,6 +73,9 @@ _NODE_WORDS = {
     "Slice": "a slice",
 }
 _OPERATORS = {"Add": "+", "Sub": "-", "Mult": "*", "Div": "/", "Pow": "**"}
+#: Largest size (bits of numerator or denominator) of any number in a formula, about 1233
+#: decimal digits (Python itself refuses to print an integer of over 4300 digits).
+MAX_NUMBER_BITS = 4096
 
 
 @dataclass(frozen=True)
@@ -139,6 +147,25 @@ class _Builder:
         self.names = names
         self.limits = limits
         self.allowed = _allowed_text(names)
+        # Where each line starts, so a literal's text is a slice: ast.get_source_segment
+        # re-splits the whole text on every call, quadratic over a long answer.
+        starts = [0]
+        for line in text.splitlines(keepends=True):
+            starts.append(starts[-1] + len(line))
+        self.line_starts = starts
+
+    def segment(self, node: ast.AST) -> str:
+        """The source text of ``node`` (the text is ASCII: columns are characters)."""
+        line, end_line = getattr(node, "lineno", None), getattr(node, "end_lineno", None)
+        column, end_column = (
+            getattr(node, "col_offset", None),
+            getattr(node, "end_col_offset", None),
+        )
+        if line is None or end_line is None or column is None or end_column is None:
+            return ""
+        return self.text[
+            self.line_starts[line - 1] + column : self.line_starts[end_line - 1] + end_column
+        ]
 
     def fail(self, node: ast.AST | None, problem: str) -> InvalidInputError:
         return InvalidInputError("student", _quote(self.text, node), self.allowed, problem=problem)
@@ -221,9 +248,12 @@ class _Builder:
         if isinstance(value, bool) or not isinstance(value, (int, float)):
             kind = "a string" if isinstance(value, (str, bytes)) else type(value).__name__
             raise self.fail(node, f"{kind} is not a number:")
-        digits = sum(ch.isdigit() for ch in (_quote(self.text, node, 10**6)))
-        if digits > self.limits.max_digits:
-            raise self.fail(node, f"a number with more than {self.limits.max_digits} digits:")
+        cap = self.limits.max_digits
+        digits = sum(ch.isdigit() for ch in self.segment(node))
+        # The value too: a hexadecimal literal has few decimal digits as typed, and
+        # turning a huge integer into text fails in Python itself (over 4300 digits).
+        if digits > cap or (isinstance(value, int) and abs(value) >= 10**cap):
+            raise self.fail(node, f"a number with more than {cap} digits:")
         if isinstance(value, int):
             return self.sympy.Integer(value)
         if value != value or value in (float("inf"), float("-inf")):
@@ -237,21 +267,59 @@ class _Builder:
             if op == "BitXor":
                 raise self.fail(node, "^ is not a power in Python; write ** (q1**2):")
             raise self.fail(node, "only + - * / ** are allowed:")
-        left = self.expression(node.left)
-        right = self.expression(node.right)
-        if op == "Add":
-            result = left + right
-        elif op == "Sub":
-            result = left - right
-        elif op == "Mult":
-            result = left * right
-        elif op == "Div":
-            if right == 0:
-                raise self.fail(node, "division by zero:")
-            result = left / right
+        if op == "Pow":
+            result = self.power(node, self.expression(node.left), self.expression(node.right))
+        elif op in ("Add", "Sub"):
+            terms = [
+                self.expression(leaf) * sign for leaf, sign in self.chain(node, ("Add", "Sub"))
+            ]
+            result = self.sympy.Add(*terms)
         else:
-            result = self.power(node, left, right)
-        return self.finite(node, result)
+            factors = []
+            for leaf, sign in self.chain(node, ("Mult", "Div")):
+                factor = self.expression(leaf)
+                if sign < 0:
+                    if factor == 0:
+                        raise self.fail(leaf, "division by zero:")
+                    factor = self.sympy.Pow(factor, -1)
+                factors.append(factor)
+            result = self.sympy.Mul(*factors)
+        return self.finite(node, self.small_numbers(node, result))
+
+    def chain(self, node: ast.BinOp, ops: tuple[str, str]) -> list[tuple[ast.AST, int]]:
+        """The operands of ``a + b - c …`` (or ``a * b / c …``) with their signs, in order.
+
+        A whole sum (product) is built by one sympy call: adding term by term would
+        re-collect the terms at every step, quadratic over a long answer. The second op
+        (``-``, ``/``) flips the sign of its right operand.
+        """
+        leaves: list[tuple[ast.AST, int]] = []
+        stack: list[tuple[ast.AST, int]] = [(node, 1)]
+        while stack:
+            current, sign = stack.pop()
+            name = type(current.op).__name__ if isinstance(current, ast.BinOp) else ""
+            if name in ops:
+                assert isinstance(current, ast.BinOp)
+                flip = -1 if name == ops[1] else 1
+                stack.append((current.right, sign * flip))  # popped after the left side
+                stack.append((current.left, sign))
+            else:
+                leaves.append((current, sign))
+        return leaves
+
+    def small_numbers(self, node: ast.AST, value: Any) -> Any:
+        """Refuse a result holding a number over :data:`MAX_NUMBER_BITS` bits.
+
+        Products of allowed literals (``1e300*1e300*…``) would otherwise grow numbers
+        without limit; printing one over 4300 digits even fails in Python itself.
+        """
+        if value.is_Atom and not value.is_Rational:
+            return value
+        numbers = [value] if value.is_Rational else value.atoms(self.sympy.Rational)
+        for number in numbers:
+            if max(int(number.p).bit_length(), int(number.q).bit_length()) > MAX_NUMBER_BITS:
+                raise self.fail(node, "number too large:")
+        return value
 
     def power(self, node: ast.BinOp, base: Any, exponent: Any) -> Any:
         sympy = self.sympy
@@ -264,7 +332,7 @@ class _Builder:
             raise self.fail(node, "division by zero:")
         if base.is_Rational:
             bits = max(int(base.p).bit_length(), int(base.q).bit_length())
-            if bits * abs(exponent) > 4096:
+            if bits * abs(exponent) > MAX_NUMBER_BITS:
                 raise self.fail(node, "number too large:")
         result = sympy.Pow(base, exponent)
         for power in result.atoms(sympy.Pow):
@@ -285,8 +353,16 @@ class _Builder:
         if len(node.args) != 1 or node.keywords or isinstance(node.args[0], ast.Starred):
             raise self.fail(node, f"{node.func.id} takes exactly one argument:")
         argument = self.expression(node.args[0])
-        function = {"sin": sympy.sin, "cos": sympy.cos, "tan": sympy.tan, "sqrt": sympy.sqrt}
-        return self.finite(node, function[node.func.id](argument))
+        name = node.func.id
+        if name == "sqrt":
+            return self.finite(node, sympy.sqrt(argument))
+        function = {"sin": sympy.sin, "cos": sympy.cos, "tan": sympy.tan}[name]
+        if argument.is_number:  # exact values: sin(pi/6) is 1/2, tan(pi/2) infinite
+            return self.finite(node, function(argument))
+        # Of a formula, kept as typed: sympy's own simplification of the argument (looking
+        # for multiples of pi, a minus sign) costs about a millisecond per call, seconds
+        # over a long answer, and the checker compares values anyway.
+        return function(argument, evaluate=False)
 
 
 def _symbol_table(symbols: Iterable[Any] | None) -> dict[str, Any]:
