@@ -1,0 +1,132 @@
+"""Run one hostile input and judge its outcome: a clear refusal naming the field, or a
+correct result, within a time and memory budget.
+
+Cheap cases run in the test process. Risky ones (those that once hung, overflowed or ran
+out of memory) run in a forked child with an address-space limit and a hard timeout, so a
+regression fails its test instead of hanging or killing the suite.
+"""
+
+from __future__ import annotations
+
+import multiprocessing
+import resource
+import time
+import traceback
+from collections.abc import Callable
+from dataclasses import dataclass, field
+from typing import Any
+
+import robotconf as rc
+
+#: Extra address space a risky child may take beyond what the test process already maps.
+CHILD_MEMORY = 1536 * 1024**2
+
+
+@dataclass(frozen=True)
+class Refused:
+    """The input must end in an ``rc.InvalidInputError`` whose field contains ``field``."""
+
+    field: str = ""
+    message: str = ""
+
+
+@dataclass(frozen=True)
+class Returns:
+    """The call must return; ``check(result)`` must hold (real numbers, not just "no error")."""
+
+    check: Callable[[Any], bool]
+    what: str = "the expected result"
+
+
+@dataclass(frozen=True)
+class Judged:
+    """Either a refusal whose field contains ``field`` or a result for which ``check`` holds
+    (an answer the checker may refuse to parse or grade as wrong)."""
+
+    field: str
+    check: Callable[[Any], bool]
+    what: str = "the expected result"
+
+
+@dataclass(frozen=True)
+class Case:
+    """One hostile input at one entry point."""
+
+    entry: str
+    name: str
+    call: Callable[[], Any]
+    expect: Refused | Returns | Judged
+    risky: bool = False
+    seconds: float = 20.0
+    setup: Callable[[], None] | None = field(default=None, compare=False)
+
+    @property
+    def id(self) -> str:
+        return f"{self.entry}: {self.name}"
+
+
+def _outcome(case: Case) -> tuple[str, str, str, bool]:
+    """``(kind, type name, text, ok)`` for one run in this process."""
+    if case.setup is not None:
+        case.setup()
+    try:
+        result = case.call()
+    except rc.InvalidInputError as err:
+        expect = case.expect
+        message = expect.message if isinstance(expect, Refused) else ""
+        ok = (
+            isinstance(expect, (Refused, Judged))
+            and expect.field in err.field
+            and message in str(err)
+            and "\n" not in str(err).strip()
+        )
+        return "refused", type(err).__name__, f"[{err.field}] {err}", ok
+    except BaseException as err:  # noqa: BLE001 - every other exception is a finding
+        text = "".join(traceback.format_exception_only(type(err), err)).strip()
+        return "raised", type(err).__name__, text[:2000], False
+    finally:
+        rc.set_memory_budget(None)
+    expect = case.expect
+    if isinstance(expect, (Returns, Judged)):
+        try:
+            ok = bool(expect.check(result))
+        except Exception as err:  # noqa: BLE001
+            return "returned", type(result).__name__, f"check failed: {err!r}", False
+        return "returned", type(result).__name__, expect.what, ok
+    return "returned", type(result).__name__, repr(result)[:300], False
+
+
+def _mapped_bytes() -> int:
+    with open("/proc/self/statm", encoding="ascii") as statm:
+        pages = int(statm.read().split()[0])
+    return pages * resource.getpagesize()
+
+
+def _child(case: Case, conn: Any) -> None:
+    limit = _mapped_bytes() + CHILD_MEMORY
+    resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+    conn.send(_outcome(case))
+    conn.close()
+
+
+def run_case(case: Case) -> tuple[str, str, str, bool, float]:
+    """Run ``case`` and return ``(kind, type name, text, ok, seconds)``."""
+    start = time.perf_counter()
+    if not case.risky:
+        kind, name, text, ok = _outcome(case)
+        return kind, name, text, ok, time.perf_counter() - start
+    context = multiprocessing.get_context("fork")
+    receive, send = context.Pipe(duplex=False)
+    process = context.Process(target=_child, args=(case, send), daemon=True)
+    process.start()
+    send.close()
+    if receive.poll(case.seconds):
+        try:
+            kind, name, text, ok = receive.recv()
+        except EOFError:
+            kind, name, text, ok = "died", "EOFError", f"exit code {process.exitcode}", False
+    else:
+        kind, name, text, ok = "timeout", "", f"no answer within {case.seconds} s", False
+    process.kill()
+    process.join(5)
+    return kind, name, text, ok, time.perf_counter() - start
