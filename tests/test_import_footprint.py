@@ -44,7 +44,7 @@ scene = rc.Scene(robot)
 scene.update([0.3, -0.5, 0.8])
 scene.update([0.0, -1.0, 1.3])
 assert scene.widget is not None and scene.labels()[-1].startswith("EE (")
-assert len(scene.widget.code.source) > 500_000, "meshcat's viewer bundle was not read"
+assert len(scene.pane.code.source) > 500_000, "meshcat's viewer bundle was not read"
 scene.show_frames(True)
 scene.add_point_cloud("workspace", [[0, 0, 0], [10, 0, 0], [0, 10, 0]])
 print(json.dumps(sorted(sys.modules)))

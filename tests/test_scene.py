@@ -192,8 +192,8 @@ def test_widget_channel_replays_to_a_new_view_and_coalesces(paper_robot: rc.Robo
     channel = scene.channel
     assert isinstance(channel, WidgetChannel)
     sent: list[tuple[dict, list]] = []
-    scene.widget.send = lambda content, buffers=None: sent.append((content, buffers))
-    channel._on_message(scene.widget, {"kind": "hello", "view": "v1"}, [])
+    scene.pane.send = lambda content, buffers=None: sent.append((content, buffers))
+    channel._on_message(scene.pane, {"kind": "hello", "view": "v1"}, [])
     content, buffers = sent[-1]
     assert content["kind"] == "replay" and content["view"] == "v1"
     assert len(buffers) >= 1
@@ -221,7 +221,7 @@ def test_bad_constructor_arguments_are_named(paper_robot: rc.Robot) -> None:
         Scene(paper_robot, height=5, channel=RecordingChannel())
     with pytest.raises(rc.InvalidInputError, match="height: not an integer: 420.0"):
         Scene(paper_robot, height=420.0, channel=RecordingChannel())  # type: ignore[arg-type]
-    with pytest.raises(rc.InvalidInputError, match="labels: not True or False: 'no'"):
+    with pytest.raises(rc.InvalidInputError, match="labels: invalid value 'no'; allowed: True"):
         Scene(paper_robot, labels="no", channel=RecordingChannel())  # type: ignore[arg-type]
 
 
@@ -337,3 +337,235 @@ def test_view_shows_one_pane_per_cell_in_a_kernel(tmp_path) -> None:  # type: ig
         for cell in notebook.cells
     ]
     assert views == [1, 1, 1]
+
+
+# -- what a view shows after a reload, and what an update sends ----------------------------
+
+
+def _replayed(scene: Scene) -> RecordingChannel:
+    """What a new view (a reloaded page, a second output) applies, in order."""
+    replay = RecordingChannel()
+    replay.send(scene._replay())
+    return replay
+
+
+def _motion(robot: rc.Robot):  # type: ignore[no-untyped-def]
+    return rc.simulate(robot, {"q2": rc.signals.Sine(amplitude=1.0)}, t_end=2, dt=0.1)
+
+
+def test_reload_after_animation_and_update_shows_the_current_pose(scene: Scene) -> None:
+    scene.animate(_motion(scene.robot))
+    scene.channel.clear()
+    q = np.array([0.5, -0.9, 1.2])
+    scene.update(q)
+    # The live views drop the animation before taking the new transforms.
+    kinds = [op.content["op"] for op in scene.channel.ops]
+    assert kinds[0] == "animation" and scene.channel.ops[0].content["action"] == "clear"
+    assert kinds.index("transforms") > 0
+    live = _transforms(scene)
+    assert len(live) == len(scene._drawing.paths)  # every item: the animation moved them all
+    # A new view gets no animation at all, and ends with the current transforms.
+    replay = _replayed(scene)
+    assert "set_animation" not in replay.kinds()
+    np.testing.assert_allclose(
+        _transforms(type("H", (), {"channel": replay}))[f"{ROBOT_PATH}/ee/sphere"][:3, 3],
+        scene.robot.end_effector(q),
+        atol=1e-4,
+    )
+    assert replay.ops[-1].content["texts"][-1] == scene.labels()[-1]
+
+
+def test_reload_during_an_animation_loads_it_paused_before_the_pose(scene: Scene) -> None:
+    scene.animate(_motion(scene.robot), play=True)
+    replay = _replayed(scene)
+    kinds = replay.kinds()
+    animation = replay.commands("set_animation")[0]
+    assert animation["options"]["play"] is False
+    # Loaded first, then the current transforms: the pose is the current q, not a frame.
+    assert kinds.index("set_animation") < kinds.index("transforms")
+    assert scene.channel.commands("set_animation")[-1]["options"]["play"] is True
+
+
+def test_update_sends_only_what_moved(scene: Scene) -> None:
+    scene.update([0.0, 0.0, 0.0])
+    scene.channel.clear()
+    scene.update([0.0, 0.0, 0.4])  # the last joint: nothing before it moves
+    (op,) = [op for op in scene.channel.ops if op.content["op"] == "transforms"]
+    moved = set(op.content["paths"])
+    assert f"{ROBOT_PATH}/ee/sphere" in moved and f"{ROBOT_PATH}/links/1" not in moved
+    assert f"{ROBOT_PATH}/modules/0/sphere" not in moved
+    (labels,) = [op for op in scene.channel.ops if op.content["op"] == "labels"]
+    assert labels.content["paths"] == [f"{ROBOT_PATH}/ee/label"]  # M1…M3 kept their text
+    scene.channel.clear()
+    scene.update([0.0, 0.0, 0.4])
+    assert scene.channel.ops == []  # nothing changed, nothing sent
+    # The log still holds the full state for a new view.
+    replay = _replayed(scene)
+    assert set(_transforms(type("H", (), {"channel": replay}))) == {
+        f"{ROBOT_PATH}/{p}" for p in scene._drawing.paths
+    }
+
+
+def test_coalescing_merges_partial_transforms_and_labels() -> None:
+    a = transforms_op(["/a", "/b"], np.stack([np.eye(4), np.eye(4)]))
+    b = transforms_op(["/b"], 3 * np.eye(4)[None])
+    from robotconf.scene._commands import command_op, labels_op
+
+    delete = command_op({"type": "delete", "path": "/c"})
+    merged = coalesce_ops(
+        [a, labels_op(["/l"], ["x"], [0]), b, labels_op(["/l"], ["y"], [1]), delete, b]
+    )
+    assert [op.content["op"] for op in merged] == ["transforms", "labels", "command", "transforms"]
+    data = np.frombuffer(merged[0].buffers[0], dtype=np.float32).reshape(-1, 4, 4)
+    assert merged[0].content["paths"] == ["/a", "/b"] and data[1, 0, 0] == 3
+    assert merged[1].content["texts"] == ["y"] and merged[1].content["rows"] == [1]
+
+
+def test_labels_have_the_robots_precision_and_stack_when_close() -> None:
+    ur5 = Scene(rc.preset("ur5"), channel=RecordingChannel())
+    # UR5 (1.19 m of links): centimetres, three significant digits of its size.
+    assert re.fullmatch(r"EE \(-?\d\.\d\d, -?\d\.\d\d, -?\d\.\d\d\)", ur5.labels()[-1])
+    scara = Scene(rc.preset("scara"), channel=RecordingChannel())
+    labels = [op for op in scara.channel.ops if op.content["op"] == "labels"][-1].content
+    texts, rows = labels["texts"], labels["rows"]
+    # Coincident frames share one label; the others are empty (drawn as nothing).
+    assert texts == [
+        "M1 (40.0, 0.0, 40.0)",
+        "M2, M3 (70.0, 0.0, 40.0)",
+        "",
+        "M4, EE (70.0, 0.0, 30.0)",
+        "",
+    ]
+    # Every pair of shown labels closer than the spacing sits on different rows.
+    points = scara._drawing.label_points(scara.q)
+    spacing = 0.25 * scara._view_radius
+    for i in range(len(points)):
+        for j in range(i):
+            if texts[i] and texts[j] and np.linalg.norm(points[i] - points[j]) < spacing:
+                assert rows[i] != rows[j], (i, j)
+    assert rows[3] == 1  # 10 mm under M2, M3: stacked above it
+    puma = Scene(rc.preset("puma560"), channel=RecordingChannel())
+    assert puma.channel.ops[-1].content["texts"][3].startswith("M4, M5, M6, EE (")
+
+
+def test_fit_view_centres_the_robot_and_sets_the_distance(scene: Scene) -> None:
+    fits = [op.content for op in scene.channel.ops if op.content["op"] == "fit"]
+    assert len(fits) == 1  # fitted at creation
+    scene.update([0.0, -1.2, 0.3])
+    scene.channel.clear()
+    scene.fit_view()
+    ops = scene.channel.ops
+    centring = {
+        c["path"]: np.array(c["matrix"]).reshape(4, 4).T
+        for c in scene.channel.commands("set_transform")
+    }
+    assert set(centring) == {"/meshcat", "/Grid", "/Axes"}
+    points = np.vstack(
+        [[0, 0, 0], scene.robot.frame_origins(scene.q), scene.robot.end_effector(scene.q)]
+    )
+    size = scene._drawing.size
+    centre = -centring["/meshcat"][:3, 3] * size
+    radius = ops[-1].content["radius"] * size
+    reach = np.linalg.norm(points - centre, axis=1).max()
+    assert reach < radius < 1.3 * reach
+
+
+# -- the control bar ------------------------------------------------------------------------
+
+
+def _animation_ops(scene: Scene) -> list[tuple[str, float | None]]:
+    return [
+        (op.content["action"], op.content.get("value"))
+        for op in scene.channel.ops
+        if op.content["op"] == "animation"
+    ]
+
+
+def test_player_controls_send_play_pause_speed_and_seek(scene: Scene) -> None:
+    bar = scene.controls
+    assert bar.play.disabled and bar.time.disabled  # nothing to play yet
+    scene.animate(_motion(scene.robot), speed=2.0)
+    assert not bar.play.disabled and bar.time.max == pytest.approx(2.0)
+    assert bar.speed.value == 2.0
+    scene.channel.clear()
+    bar.pause.click()
+    bar.play.click()
+    bar.speed.value = 4.0
+    bar.time.value = 1.0
+    # Keyframes are in clip seconds (motion seconds / 2): speed 4 is twice the clip's.
+    assert _animation_ops(scene) == [("pause", None), ("play", None), ("speed", 2.0), ("seek", 0.5)]
+    scene.channel.clear()
+    bar.speed.value = 0.25
+    assert _animation_ops(scene) == [("speed", 0.125)]
+
+
+def test_reported_playback_time_moves_the_scrubber_without_seeking(scene: Scene) -> None:
+    bar = scene.controls
+    scene.animate(_motion(scene.robot), speed=2.0)
+    scene.channel.clear()
+    scene._view_event({"kind": "time", "value": 0.6, "playing": True})
+    assert bar.time.value == pytest.approx(1.2) and scene.animation.playing
+    assert scene.channel.ops == []  # following the page is not a seek
+
+
+def test_fit_labels_frames_and_trace_controls(scene: Scene) -> None:
+    bar = scene.controls
+    scene.channel.clear()
+    bar.fit.click()
+    assert scene.channel.kinds()[-1] == "fit"
+    scene.channel.clear()
+    bar.labels.value = "names"
+    labels = [op.content for op in scene.channel.ops if op.content["op"] == "labels"]
+    assert labels[-1]["texts"] == ["M1", "M2", "M3", "EE"]
+    bar.labels.value = "off"
+    assert scene.channel.ops[-1].content == {
+        "op": "visible",
+        "paths": [f"{ROBOT_PATH}/{p}" for p in scene._drawing.label_paths],
+        "value": False,
+    }
+    bar.labels.value = "positions"
+    assert scene.channel.ops[-1].content["texts"][-1] == "EE (70.0, 0.0, 20.0)"
+    scene.channel.clear()
+    bar.frames.value = True
+    assert scene.channel.ops[-1].content["value"] is True
+    assert all(p.endswith("/frame") for p in scene.channel.ops[-1].content["paths"])
+    # The trace: the EE's path of the loaded motion, as one line.
+    motion = _motion(scene.robot)
+    bar.trace.value = True
+    scene.channel.clear()
+    scene.animate(motion)
+    (trace,) = [c for c in scene.channel.commands("set_object") if c["path"].endswith("/trace")]
+    assert trace["object"]["object"]["type"] == "Line"
+    attribute = trace["object"]["geometries"][0]["data"]["attributes"]["position"]
+    line = np.frombuffer(attribute["array"].data, dtype=np.float32).reshape(-1, 3)
+    np.testing.assert_allclose(line, motion.position[:, -1], rtol=1e-6, atol=1e-4)
+    scene.channel.clear()
+    bar.trace.value = False
+    assert scene.channel.commands("delete") == [{"type": "delete", "path": f"{ROBOT_PATH}/trace"}]
+
+
+def test_view_puts_the_control_bar_above_the_pane(paper_robot: rc.Robot) -> None:
+    scene = rc.view(paper_robot, display=False)
+    assert list(scene.widget.children) == [scene.controls.widget, scene.pane]
+    bare = rc.view(paper_robot, display=False, controls=False)
+    assert bare.widget is bare.pane
+
+
+def test_the_pages_rounded_echo_of_the_time_does_not_seek(scene: Scene) -> None:
+    bar = scene.controls
+    scene.animate(_motion(scene.robot))
+    scene._view_event({"kind": "time", "value": 0.0085, "playing": True})
+    scene.channel.clear()
+    bar.time.value = round(0.0085 / bar.time.step) * bar.time.step  # the slider's rounding
+    assert scene.channel.ops == [] and scene.animation.playing
+    bar.time.value = 1.5  # a real scrub
+    assert _animation_ops(scene) == [("seek", 1.5)] and not scene.animation.playing
+
+
+def test_a_view_opening_during_playback_plays_and_one_after_it_does_not(scene: Scene) -> None:
+    scene.animate(_motion(scene.robot), play=True)
+    assert _replayed(scene).ops[-1].content == {"op": "animation", "action": "play"}
+    scene._view_event({"kind": "time", "value": 2.0, "playing": False})  # the page: ended
+    assert _replayed(scene).ops[-1].content["op"] == "labels"
+    scene.animate(_motion(scene.robot), play=False)
+    assert all(op.content["op"] != "animation" for op in _replayed(scene).ops)

@@ -54,7 +54,11 @@ class PlaceholderScene:
 
 
 def default_scene_factory(height: int = 420) -> Callable[[Any], Any]:
-    """``robot -> robotconf.scene.Scene`` (imported on first use), or a placeholder."""
+    """``robot -> robotconf.scene.Scene`` (imported on first use), or a placeholder.
+
+    The scene's ``widget`` is its control bar (play, speed, time, fit, labels, frames,
+    trace) above the 3D pane, so the panel's tab shows both.
+    """
 
     def factory(robot: Any) -> Any:
         try:

@@ -4,16 +4,18 @@ Presentation: every position drawn comes from :mod:`robotconf.kinematics`.
 
 The scene
     :class:`Scene`, :func:`view`, :class:`RecordingChannel` (a channel that records
-    instead of sending: tests and the offline HTML export use it)
+    instead of sending: tests and the offline HTML export use it), :class:`SceneControls`
+    (the bar above the pane: play, pause, speed, time, fit view, labels, frames, trace)
 Building blocks
     :class:`RobotDrawing`, :func:`robot_size`, :class:`SceneLog`, :func:`pack_ops`,
     :func:`transforms_op`, :func:`align_y`, :func:`compose`, :func:`quaternions`;
-    :class:`WidgetChannel` and :func:`coalesce_ops` (these two import anywidget on use)
+    :class:`WidgetChannel`, :func:`coalesce_ops` and :class:`SceneControls` (these import
+    ipywidgets on use)
 
 >>> from robotconf.kinematics import Module, Robot
 >>> scene = Scene(Robot([Module("Tz")], end_effector=(0, 0, 1)), channel=RecordingChannel())
->>> scene.labels()
-['M1 (0.0, 0.0, 0.0)', 'EE (0.0, 0.0, 1.0)']
+>>> scene.labels()  # three significant digits of the robot's size (1)
+['M1 (0.00, 0.00, 0.00)', 'EE (0.00, 0.00, 1.00)']
 """
 
 from typing import Any
@@ -28,6 +30,7 @@ __all__ = [
     "Scene",
     "view",
     "RecordingChannel",
+    "SceneControls",
     # building blocks
     "RobotDrawing",
     "robot_size",
@@ -51,4 +54,8 @@ def __getattr__(name: str) -> Any:
         from . import _widget
 
         return getattr(_widget, name)
+    if name == "SceneControls":
+        from ._controls import SceneControls
+
+        return SceneControls
     raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

@@ -27,6 +27,8 @@ __all__ = [
     "set_object_op",
     "transforms_op",
     "labels_op",
+    "fit_op",
+    "animation_op",
     "pack_ops",
     "pack_command",
     "unpack_command",
@@ -104,9 +106,44 @@ def transforms_op(paths: Sequence[str], matrices: np.ndarray) -> Op:
     return Op({"op": "transforms", "paths": list(paths)}, (data,))
 
 
-def labels_op(paths: Sequence[str], texts: Sequence[str]) -> Op:
-    """New texts for existing label sprites (redrawn in place, no new objects)."""
-    return Op({"op": "labels", "paths": list(paths), "texts": list(texts)})
+def labels_op(paths: Sequence[str], texts: Sequence[str], rows: Sequence[int] | None = None) -> Op:
+    """New texts for existing label sprites (redrawn in place, no new objects).
+
+    ``rows`` stacks labels whose points are close: row ``k`` is drawn ``k`` label heights
+    above its point, on screen, so near points keep readable labels at any zoom.
+
+    >>> labels_op(["/a", "/b"], ["M1", "M2"], [0, 1]).content["rows"]
+    [0, 1]
+    """
+    content: dict[str, Any] = {"op": "labels", "paths": list(paths), "texts": list(texts)}
+    if rows is not None:
+        content["rows"] = [int(row) for row in rows]
+    return Op(content)
+
+
+def fit_op(radius: float) -> Op:
+    """Put the camera where a sphere of ``radius`` about the origin just fills the pane.
+
+    The viewer keeps the camera's direction and changes only its distance, from the pane's
+    aspect and field of view (which only the page knows).
+
+    >>> fit_op(0.5).content
+    {'op': 'fit', 'radius': 0.5}
+    """
+    return Op({"op": "fit", "radius": float(radius)})
+
+
+def animation_op(action: str, value: float | None = None) -> Op:
+    """Drive the loaded animation: ``play``, ``pause``, ``seek`` (clip seconds),
+    ``speed`` (time scale) or ``clear`` (drop it; the objects keep their transforms).
+
+    >>> animation_op("seek", 1.5).content
+    {'op': 'animation', 'action': 'seek', 'value': 1.5}
+    """
+    content: dict[str, Any] = {"op": "animation", "action": action}
+    if value is not None:
+        content["value"] = float(value)
+    return Op(content)
 
 
 def pack_ops(ops: Iterable[Op]) -> tuple[list[dict[str, Any]], list[bytes]]:
@@ -141,6 +178,10 @@ class SceneLog:
     def record(self, key: tuple[str, str], op: Op) -> None:
         self._entries.pop(key, None)
         self._entries[key] = op
+
+    def drop(self, key: tuple[str, str]) -> None:
+        """Forget one entry (nothing if absent)."""
+        self._entries.pop(key, None)
 
     def forget(self, prefix: str) -> None:
         for key in [k for k in self._entries if k[1] == prefix or k[1].startswith(prefix + "/")]:

@@ -15,7 +15,15 @@ from typing import Any
 import numpy as np
 
 from .._validation import check_joint_values
-from ..kinematics import END_EFFECTOR_LABEL, JOINT_OF_LETTER, Robot, format_point, joint_axes
+from ..kinematics import (
+    END_EFFECTOR_LABEL,
+    JOINT_OF_LETTER,
+    Robot,
+    characteristic_length,
+    format_point,
+    joint_axes,
+)
+from ._labels import label_digits
 from ._placement import Placement, align_y, segment_placement
 
 __all__ = ["DrawnItem", "RobotDrawing", "robot_size", "COLORS"]
@@ -38,7 +46,8 @@ JOINT_MARKERS = {"revolute": ("cylinder", 0.6), "prismatic": ("box", 0.5)}
 LINK_RADIUS = 0.012
 TRIAD_LENGTH = 0.12
 LABEL_HEIGHT = 0.05
-LABEL_LIFT = 0.06
+#: Labels stand just above the spheres (the viewer sizes and stacks them on screen).
+LABEL_LIFT = 1.5 * SPHERE_RADIUS
 
 
 @dataclass(frozen=True)
@@ -184,26 +193,43 @@ class RobotDrawing:
         return Placement(position[0], rotation[0], scale[0])
 
     def _joint_placement(self, axes: Any, origins: np.ndarray, i: int, tiny: float) -> Placement:
-        direction = axes.direction[:, i]
+        # On the joint's own axis, as the core defines it (rc.joint_axes): a standard DH
+        # joint i turns about z_{i-1} through frame i-1's origin, which is |a_i| away from
+        # frame i's origin; a module or modified DH joint turns about its own frame's axis.
+        start, direction = axes.point[:, i], axes.direction[:, i]
         if self.joint_types[i] == "revolute":
-            # A short drum on the axis, centred where the frame is drawn.
+            # A short drum centred where the joint sits.
             length = 3.0 * SPHERE_RADIUS * self.size
-            scale = np.broadcast_to([1.0, length, 1.0], origins[:, i].shape)
-            return Placement(origins[:, i], align_y(direction), scale)
-        # A prismatic joint: a bar from where the slide starts to where the frame is now.
-        start = axes.point[:, i]
-        placement = segment_placement(start, origins[:, i], tiny)
+            scale = np.broadcast_to([1.0, length, 1.0], start.shape)
+            return Placement(start, align_y(direction), scale)
+        # A prismatic joint: a bar along the slide, from where it starts to where the slid
+        # frame's origin projects on it (a standard DH row adds a_i across, off the axis).
+        travel = np.einsum("...k,...k->...", origins[:, i] - start, direction)
+        placement = segment_placement(start, start + travel[..., None] * direction, tiny)
         minimum = 2.0 * SPHERE_RADIUS * self.size
         placement.scale[..., 1] = np.maximum(placement.scale[..., 1], minimum)
         placement.rotation = align_y(direction)
         return placement
 
-    def labels(self, q: Any) -> list[str]:
-        """Label texts ``"M2 (0.0, 0.0, 20.0)"`` for one configuration ``q`` (n,)."""
-        origins = self.robot.frame_origins(q)
-        texts = [format_point(name, origins[i]) for i, name in enumerate(self.point_names[:-1])]
-        texts.append(format_point(END_EFFECTOR_LABEL, self.robot.end_effector(q)))
-        return texts
+    def labels(self, q: Any, digits: int | None = None) -> list[str]:
+        """Label texts ``"M2 (0.0, 0.0, 20.0)"`` for one configuration ``q`` (n,).
+
+        ``digits``: decimals; default three significant digits of the robot's
+        characteristic length (:func:`~robotconf.scene._labels.label_digits`).
+        """
+        return self.label_texts(self.label_points(q), digits)
+
+    def label_texts(self, points: np.ndarray, digits: int | None = None) -> list[str]:
+        """Label texts for the points :meth:`label_points` gave."""
+        if digits is None:
+            digits = label_digits(characteristic_length(self.robot))
+        return [
+            format_point(name, p, digits) for name, p in zip(self.point_names, points, strict=True)
+        ]
+
+    def label_points(self, q: Any) -> np.ndarray:
+        """Where the labels stand at ``q`` (n,): every frame origin, then the EE, (n + 1, 3)."""
+        return np.vstack([self.robot.frame_origins(q), self.robot.end_effector(q)[None]])
 
 
 def structure_key(robot: Robot) -> tuple[Any, ...]:

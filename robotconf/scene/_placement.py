@@ -38,21 +38,27 @@ class Placement:
 def align_y(direction: np.ndarray) -> np.ndarray:
     """Rotations that turn the y axis onto unit ``direction`` (…, 3) → (…, 3, 3).
 
-    The shortest-arc rotation (Rodrigues' formula about ``y × d``); ``d = −y`` turns
-    about x. NaN or zero directions give the identity.
+    The shortest-arc rotation (Rodrigues' formula about ``y × d``) for ``d`` in the upper
+    half (``d_y ≥ 0``); below, the shortest arc onto ``−d`` followed by a half turn about
+    x, so the formula never divides by ``1 + d_y`` near zero and stays orthonormal to
+    rounding next to ``−y``. NaN or zero directions give the identity.
 
     Examples
     --------
     >>> align_y(np.array([1.0, 0.0, 0.0])).round(12) @ [0, 1, 0]
     array([1., 0., 0.])
+    >>> align_y(np.array([1e-9, -1.0, 0.0])) @ [0, 1, 0]
+    array([ 1.e-09, -1.e+00,  0.e+00])
     """
     d = np.nan_to_num(np.asarray(direction, dtype=float))
     norm = np.linalg.norm(d, axis=-1, keepdims=True)
     d = np.where(norm > 0, d / np.where(norm > 0, norm, 1.0), [0.0, 1.0, 0.0])
-    x, y, z = d[..., 0], d[..., 1], d[..., 2]
-    # y × d = (z, 0, −x); cos θ = y; Rodrigues with k = (z, 0, −x)/sin θ folded in.
-    c = y
-    factor = np.where(c > -1.0 + 1e-12, 1.0 / np.where(c > -1.0 + 1e-12, 1.0 + c, 1.0), 0.0)
+    lower = d[..., 1] < 0
+    # Work with e = ±d in the upper half: 1 + e_y ≥ 1, no cancellation anywhere.
+    e = np.where(lower[..., None], -d, d)
+    x, c, z = e[..., 0], e[..., 1], e[..., 2]
+    # y × e = (z, 0, −x); cos θ = e_y; Rodrigues with k = (z, 0, −x)/sin θ folded in.
+    factor = 1.0 / (1.0 + c)
     out = np.empty(d.shape[:-1] + (3, 3))
     out[..., 0, 0] = c + z * z * factor
     out[..., 0, 1] = x
@@ -63,9 +69,8 @@ def align_y(direction: np.ndarray) -> np.ndarray:
     out[..., 2, 0] = -x * z * factor
     out[..., 2, 1] = z
     out[..., 2, 2] = c + x * x * factor
-    flipped = c <= -1.0 + 1e-12
-    if np.any(flipped):
-        out[flipped] = np.diag([1.0, -1.0, -1.0])
+    # R(d) = R(−d) · Rx(π): Rx(π) turns y onto −y, R(−d) turns −y onto d.
+    out[..., :, 1:] = np.where(lower[..., None, None], -out[..., :, 1:], out[..., :, 1:])
     return out
 
 

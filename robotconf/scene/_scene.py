@@ -1,43 +1,52 @@
 """The robot in a 3D pane: Figure 14 of the paper, live in the notebook.
 
 :class:`Scene` turns a robot into meshcat objects once and, when ``q`` changes, sends only
-transforms and label texts. Every position it shows comes from the core, so
-``robot.end_effector(q)`` in a cell gives the number on the red sphere's label.
+the transforms and label texts that changed. Every position it shows comes from the core,
+so ``robot.end_effector(q)`` in a cell gives the number on the red sphere's label.
 """
 
 from __future__ import annotations
 
 from pathlib import Path
+from time import monotonic
 from typing import Any
 
 import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_configuration, check_flag, check_integer
-from ..kinematics import Robot
-from ._animation import animation_command
+from ..kinematics import Robot, characteristic_length
+from ._animation import AnimationState
 from ._commands import (
     ROOT,
     Op,
     SceneLog,
+    animation_op,
     command_op,
+    fit_op,
     labels_op,
     set_object_op,
     shape_object,
     transforms_op,
 )
 from ._drawing import RobotDrawing, robot_size, structure_key
+from ._fit import view_sphere
+from ._labels import check_label_mode, label_digits, label_rows, merge_coincident
+from ._playback import _ANIMATION_KEYS, ROBOT, Playback
+from ._shown import Shown
 
 __all__ = ["Scene", "view"]
 
-#: The robot's objects live under this path; clouds and the base frame beside it.
-ROBOT = f"{ROOT}/robot"
+#: Centring moves everything meshcat draws for us, and its grid and world axes with it.
+CENTRED = ("/meshcat", "/Grid", "/Axes")
 
 #: Rebuild the objects when the robot's size changes by more than this factor.
 RESIZE_FACTOR = 2.0
+#: Labels of points closer than this (times the view radius) are stacked in rows.
+LABEL_SPACING = 0.25
 
 
-class Scene:
+class Scene(Playback):
     """A robot drawn in meshcat's three.js viewer inside the notebook.
 
     Parameters
@@ -47,10 +56,13 @@ class Scene:
         Initial coordinates; default: the modules' own ``q``.
     height : int
         Pane height in pixels.
-    labels : bool
-        Show position labels (``EE (70.0, 0.0, 20.0)``).
+    labels : {"positions", "names", "off"} or bool
+        What the labels show: ``EE (70.0, 0.0, 20.0)``, ``EE``, or nothing (``True`` is
+        ``"positions"``, ``False`` is ``"off"``).
     frames : bool
         Show an RGB triad (x red, y green, z blue) at every module frame.
+    controls : bool
+        Put the control bar above the pane (animation, fit view, labels, frames, trace).
     channel : object, optional
         Where ops go: default a notebook widget; tests pass a
         :class:`~robotconf.scene.RecordingChannel`.
@@ -79,25 +91,34 @@ class Scene:
         q: Any = None,
         *,
         height: int = 420,
-        labels: bool = True,
+        labels: bool | str = True,
         frames: bool = False,
+        controls: bool = True,
         channel: Any = None,
         max_rate: float | None = 60.0,
     ) -> None:
         _check_robot(robot)
         height = check_integer(height, "height", 100, 4000, "an integer from 100 to 4000 (pixels)")
-        self._labels_on = check_flag(labels, "labels")
+        self._label_mode = check_label_mode(labels)
         self._frames_on = check_flag(frames, "frames")
+        self._controls_on = check_flag(controls, "controls")
+        self._trace_on = False
         self.height = height
         self._log = SceneLog()
-        self._widget = None
+        self._shown = Shown()
+        self._pane = None
+        self._widget: Any = None
+        self._controls: Any = None
+        self._animation: AnimationState | None = None
+        self._view_radius = 1.0
+        self._digits = 1
         if channel is None:
             from ._widget import SceneWidget, WidgetChannel, shared_code
 
-            self._widget = SceneWidget(height=height, code=shared_code())
-            channel = WidgetChannel(self._widget, self._log.ops, max_rate=max_rate)
+            self._pane = SceneWidget(height=height, code=shared_code())
+            channel = WidgetChannel(self._pane, self._replay, max_rate=max_rate)
+            channel.on_event = self._view_event
         self.channel = channel
-        self._shown_labels: list[str] = []
         self._drawing: RobotDrawing | None = None
         self._shown_in_cell: int | None = None
         self.robot = robot
@@ -109,8 +130,40 @@ class Scene:
 
     @property
     def widget(self) -> Any:
-        """The ipywidgets widget to place in a layout (``None`` with a custom channel)."""
+        """The widget to place in a layout: the control bar above the pane (``None`` with a
+        custom channel)."""
+        if self._widget is None and self._pane is not None:
+            if self._controls_on:
+                import ipywidgets
+
+                self._widget = ipywidgets.VBox([self.controls.widget, self._pane])
+            else:
+                self._widget = self._pane
         return self._widget
+
+    @property
+    def pane(self) -> Any:
+        """The 3D pane alone (an anywidget), or ``None`` with a custom channel."""
+        return self._pane
+
+    @property
+    def controls(self) -> Any:
+        """The scene's control bar (:class:`~robotconf.scene.SceneControls`), made on use."""
+        if self._controls is None:
+            from ._controls import SceneControls
+
+            self._controls = SceneControls(self)
+        return self._controls
+
+    @property
+    def label_mode(self) -> str:
+        """What the labels show: ``"off"``, ``"names"`` or ``"positions"``."""
+        return self._label_mode
+
+    @property
+    def frames_shown(self) -> bool:
+        """Whether the module frames' triads are shown."""
+        return self._frames_on
 
     def set_robot(self, robot: Robot, q: Any = None) -> None:
         """Show another robot; objects are rebuilt only if its structure changed.
@@ -125,19 +178,23 @@ class Scene:
         values = self._values(robot, q)
         size = robot_size(robot, values)
         drawing = self._drawing
+        self.robot = robot
+        self._digits = label_digits(characteristic_length(robot))
         if (
             drawing is None
             or drawing.structure != structure_key(robot)
             or not 1 / RESIZE_FACTOR <= size / drawing.size <= RESIZE_FACTOR
         ):
-            self._build(RobotDrawing(robot, size))
+            self._build(RobotDrawing(robot, size), values)
         else:
             drawing.robot = robot
-        self.robot = robot
         self.update(values)
 
     def update(self, q: Any) -> None:
-        """Move the robot to ``q`` (n,): one message with transforms and label texts.
+        """Move the robot to ``q`` (n,): one message with what changed.
+
+        An animation loaded before is dropped: the pane shows ``q``, now and after a
+        page reload.
 
         Parameters
         ----------
@@ -151,58 +208,54 @@ class Scene:
         """
         drawing = self._require_drawing()
         values = self._values(self.robot, q)
-        matrices = drawing.placements(values).matrices()
-        ops = [transforms_op([self._path(p) for p in drawing.paths], matrices)]
-        texts = drawing.labels(values)
-        if self._labels_on and texts != self._shown_labels:
-            ops.append(labels_op([self._path(p) for p in drawing.label_paths], texts))
-            self._shown_labels = texts
+        ops: list[Op] = []
+        if self._animation is not None:
+            ops += self._drop_animation()
         self.q = values
-        self._send(ops)
+        paths = [self._path(p) for p in drawing.paths]
+        matrices = drawing.placements(values).matrices()
+        changed, moved = self._shown.transforms(paths, matrices)
+        live = [transforms_op(changed, moved)] if changed else []
+        logged = [transforms_op(paths, matrices)]
+        label_live, label_logged = self._label_ops()
+        self._send(ops + live + label_live, logged=logged + label_logged)
 
     def labels(self) -> list[str]:
         """The position labels at the current ``q``: ``["M1 (…)", …, "EE (…)"]``."""
-        return self._require_drawing().labels(self.q)
+        return self._require_drawing().labels(self.q, self._digits)
 
     def show_frames(self, visible: bool = True) -> None:
         """Show or hide the RGB triads at the module frames (x red, y green, z blue)."""
         self._frames_on = check_flag(visible, "visible")
         self._send([self._visibility_op("frames", self._frames_on)])
+        self._sync_controls()
 
     def show_labels(self, visible: bool = True) -> None:
-        """Show or hide the position labels."""
-        self._labels_on = check_flag(visible, "visible")
-        ops = [self._visibility_op("labels", self._labels_on)]
-        if self._labels_on:
-            self._shown_labels = self.labels()
-            drawing = self._require_drawing()
-            ops.append(labels_op([self._path(p) for p in drawing.label_paths], self._shown_labels))
-        self._send(ops)
+        """Show the position labels, or hide every label (see :meth:`set_label_mode`)."""
+        self.set_label_mode("positions" if check_flag(visible, "visible") else "off")
 
-    def animate(self, motion: Any, *, speed: float = 1.0, play: bool = True) -> None:
-        """Play a simulated motion in the pane (play / pause / time scrubber in its menu).
+    def set_label_mode(self, mode: str) -> None:
+        """What the labels show: ``"off"``, ``"names"`` or ``"positions"``."""
+        self._label_mode = check_label_mode(mode)
+        live, logged = self._label_ops()
+        visibility = self._visibility_op("labels", self._label_mode != "off")
+        self._send([visibility, *live], logged=[visibility, *logged])
+        self._sync_controls()
 
-        Labels show names only while the animation runs: the viewer replays transforms,
-        and a number that does not follow the robot would be wrong. ``update(q)``
-        brings the numbers back.
+    def fit_view(self) -> None:
+        """Centre the robot at its current ``q`` and zoom until it fills the pane.
 
-        Parameters
-        ----------
-        motion : Motion
-            From :func:`robotconf.simulate` with this scene's robot.
-        speed : float
-            Playback speed (1 = real time).
-        play : bool
-            Start playing at once.
+        The camera keeps its direction; the scene's centre moves to the middle of the
+        sphere around everything drawn (:func:`~robotconf.scene._fit.view_sphere`).
         """
         drawing = self._require_drawing()
-        command = animation_command(drawing, motion, speed=speed, play=play, root=ROBOT)
-        # The names themselves: cutting "M2 (…)" at " (" would also cut a name holding it.
-        names = list(drawing.point_names)
-        self._shown_labels = names
-        self._send(
-            [labels_op([self._path(p) for p in drawing.label_paths], names), command_op(command)]
-        )
+        centre, radius = view_sphere(drawing, self.q)
+        self._view_radius = radius
+        shift = np.eye(4)
+        shift[:3, 3] = -centre / drawing.size
+        ops = [_transform_command(path, shift) for path in CENTRED]
+        ops.append(fit_op(radius / drawing.size))
+        self._send(ops)
 
     def add_point_cloud(
         self, name: str, points: Any, color: Any = (0.2, 0.4, 0.9), size: float | None = None
@@ -239,12 +292,16 @@ class Scene:
         from ._html import scene_html
 
         target = Path(path)
-        target.write_text(scene_html(self._log.ops(), title=self.robot.name or "robot"), "utf-8")
+        target.write_text(scene_html(self._replay(), title=self.robot.name or "robot"), "utf-8")
         return target
 
     def close(self) -> None:
         """Close the widget (its views release their WebGL contexts)."""
         self.channel.close()
+        if self._controls is not None:
+            self._controls.close()
+        if self._widget is not None and self._widget is not self._pane:
+            self._widget.close()
 
     def _ipython_display_(self) -> None:
         from IPython.display import display
@@ -254,31 +311,83 @@ class Scene:
         if self._shown_in_cell is not None and self._shown_in_cell == _execution_count():
             self._shown_in_cell = None
             return
-        display(self._widget if self._widget is not None else repr(self))
+        widget = self.widget
+        display(widget if widget is not None else repr(self))
 
     def __repr__(self) -> str:
         return f"<Scene of {self.robot.n} modules at q={np.round(self.q, 4).tolist()}>"
 
     # -- building blocks -------------------------------------------------------------------
 
-    def _build(self, drawing: RobotDrawing) -> None:
+    def _build(self, drawing: RobotDrawing, values: np.ndarray) -> None:
         # A fresh view has nothing to delete, so the delete itself is not logged.
         self._log.forget(ROBOT)
-        self._send([command_op({"type": "delete", "path": ROBOT})], log=False)
+        ops = [command_op({"type": "delete", "path": ROBOT})]
+        if self._animation is not None:
+            ops.insert(0, animation_op("clear"))
+            for key in _ANIMATION_KEYS:
+                self._log.drop(key)
+            self._animation = None
+        self._send(ops, log=False)
         self._drawing = drawing
-        self._shown_labels = []
+        self._shown.forget()
         scale = 1.0 / drawing.size
         ops = [_transform_command(ROOT, np.diag([scale, scale, scale, 1.0]))]
         for item in drawing.items:
             obj = shape_object(item.shape, item.size, item.color)
             ops.append(set_object_op(self._path(item.path), obj))
         ops.append(self._visibility_op("frames", self._frames_on))
-        ops.append(self._visibility_op("labels", self._labels_on))
+        ops.append(self._visibility_op("labels", self._label_mode != "off"))
         self._send(ops)
+        self.q = values
+        self.fit_view()
+        self._sync_controls()
+
+    def _label_ops(self) -> tuple[list[Op], list[Op]]:
+        """The labels that changed (for live views) and all labels (for the log)."""
+        drawing = self._require_drawing()
+        if self._label_mode == "off":
+            return [], []
+        points = drawing.label_points(self.q)
+        names = list(drawing.point_names)
+        if self._animation is not None:
+            # The names themselves, one per moving point: the viewer replays transforms, so
+            # a number, or a merge of points that part during the motion, would be wrong.
+            texts = names
+        else:
+            texts = merge_coincident(names, points, self._digits, self._label_mode == "positions")
+        rows = label_rows(points, LABEL_SPACING * self._view_radius, [not t for t in texts])
+        paths = [self._path(p) for p in drawing.label_paths]
+        changed = self._shown.labels(paths, texts, rows)
+        live = [labels_op(*changed)] if changed[0] else []
+        return live, [labels_op(paths, texts, rows)]
+
+    def _sync_controls(self) -> None:
+        if self._controls is not None:
+            self._controls.sync()
+
+    def _replay(self) -> list[Op]:
+        """The log in replay order: the animation (paused) before the current transforms,
+        so a new view or a reloaded page shows the current ``q``."""
+        ops = self._log.ops()
+        animation = [op for op in ops if _log_key(op) in _ANIMATION_KEYS]
+        rest = [op for op in ops if _log_key(op) not in _ANIMATION_KEYS]
+        first_state = next(
+            (k for k, op in enumerate(rest) if op.content["op"] in ("transforms", "labels")),
+            len(rest),
+        )
+        ops = rest[:first_state] + animation + rest[first_state:]
+        state = self._animation
+        if state is not None and state.still_playing(monotonic()):
+            # A view that opens while the motion plays (the cell that made the scene and
+            # animated it) plays it too; once it has ended, views show the current q.
+            ops.append(animation_op("play"))
+        return ops
 
     def _setup_ops(self) -> list[Op]:
         return [
-            # Look at a robot of unit size from the front right, slightly above.
+            # Look at the robot from the front right, slightly above; fit_view sets the
+            # distance, keeping this direction.
             command_op(
                 {
                     "type": "set_property",
@@ -297,11 +406,14 @@ class Scene:
     def _path(self, item_path: str) -> str:
         return f"{ROBOT}/{item_path}"
 
-    def _send(self, ops: list[Op], *, log: bool = True) -> None:
+    def _send(self, ops: list[Op], *, log: bool = True, logged: list[Op] | None = None) -> None:
+        """Send ``ops`` to the live views; record ``logged`` (default: the same ops) as the
+        state a new view replays."""
         if log:
-            for op in ops:
+            for op in ops if logged is None else logged:
                 self._log.record(_log_key(op), op)
-        self.channel.send(ops)
+        if ops:
+            self.channel.send(ops)
 
     def _values(self, robot: Robot, q: Any) -> np.ndarray:
         # A motion (T, n) is refused here: animate() plays it.
@@ -337,6 +449,8 @@ def _log_key(op: Op) -> tuple[str, str]:
         return (content["type"], content["path"])
     if content["op"] in ("transforms", "labels", "visible"):
         return (content["op"], "|".join(content["paths"]))
+    if content["op"] == "animation":
+        return ("animation", content["action"])
     return (content["op"], "")
 
 
@@ -348,7 +462,7 @@ def view(robot: Robot, q: Any = None, *, display: bool = True, **options: Any) -
     >>> import robotconf as rc
     >>> scene = rc.view(rc.Robot([rc.Module("Rz")], end_effector=(1, 0, 0)), display=False)
     >>> scene.labels()
-    ['M1 (0.0, 0.0, 0.0)', 'EE (1.0, 0.0, 0.0)']
+    ['M1 (0.00, 0.00, 0.00)', 'EE (1.00, 0.00, 0.00)']
     """
     scene = Scene(robot, q, **options)
     if display:

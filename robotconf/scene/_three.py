@@ -30,6 +30,7 @@ __all__ = [
     "mesh",
     "triad",
     "point_cloud",
+    "polyline",
     "label_sprite",
 ]
 
@@ -183,6 +184,22 @@ def point_cloud(position: np.ndarray, color: np.ndarray, size: float) -> dict[st
         "vertexColors": 2,
     }
     return _object("Points", _vertices(position, color), material)
+
+
+def polyline(points: np.ndarray, color: int) -> dict[str, Any]:
+    """A line through ``points`` (N, 3) in one colour (0xRRGGBB): a path, e.g. the EE's.
+
+    >>> line = polyline(np.zeros((4, 3)), 0xD62728)
+    >>> line["object"]["type"], line["materials"][0]["type"]
+    ('Line', 'LineBasicMaterial')
+    """
+    geometry = {
+        "uuid": _uuid(),
+        "type": "BufferGeometry",
+        "data": {"attributes": {"position": float32_attribute(points)}},
+    }
+    material = _material("LineBasicMaterial", color, vertex_colors=False)
+    return _object("Line", geometry, material)
 
 
 def label_sprite(height: float) -> dict[str, Any]:

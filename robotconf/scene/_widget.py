@@ -74,6 +74,8 @@ class WidgetChannel:
         self._pending: list[Op] = []
         self._timer: asyncio.TimerHandle | None = None
         self.sent = 0
+        #: Called with every other message a view sends (playback time reports).
+        self.on_event: Callable[[dict[str, Any]], None] | None = None
         widget.on_msg(self._on_message)
 
     def send(self, ops: list[Op]) -> None:
@@ -108,13 +110,17 @@ class WidgetChannel:
         self._timer = loop.call_later(max(delay, 0.0), self.flush)
 
     def _on_message(self, _widget: Any, content: dict[str, Any], _buffers: list[bytes]) -> None:
-        if isinstance(content, dict) and content.get("kind") == "hello":
+        if not isinstance(content, dict):
+            return
+        if content.get("kind") == "hello":
             self.flush()
             contents, buffers = pack_ops(self._replay())
             self.widget.send(
                 {"kind": "replay", "view": str(content.get("view", "")), "ops": contents},
                 buffers,
             )
+        elif self.on_event is not None:
+            self.on_event(content)
 
     def close(self) -> None:
         if self._timer is not None:
@@ -124,15 +130,58 @@ class WidgetChannel:
 
 
 def coalesce_ops(ops: list[Op]) -> list[Op]:
-    # Held transforms and labels are state, not events: only the newest of each counts.
-    latest: dict[tuple[str, str], int] = {}
-    for k, op in enumerate(ops):
+    """Merge held transforms and labels: state, not events, so only the newest counts.
+
+    Within each run of transforms and labels ops (a command ends a run: objects it creates
+    or deletes must see the transforms in order), one transforms op keeps the newest
+    matrix of every path and one labels op the newest text of every label.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from ._commands import transforms_op
+    >>> a = transforms_op(["/x", "/y"], np.stack([np.eye(4), np.eye(4)]))
+    >>> b = transforms_op(["/y"], 2 * np.eye(4)[None])
+    >>> merged = coalesce_ops([a, b])
+    >>> merged[0].content["paths"], np.frombuffer(merged[0].buffers[0], np.float32)[-1]
+    (['/x', '/y'], np.float32(2.0))
+    """
+    out: list[Op] = []
+    matrices: dict[str, bytes] = {}
+    labels: dict[str, tuple[str, int | None]] = {}
+
+    def end_run() -> None:
+        if matrices:
+            out.append(
+                Op({"op": "transforms", "paths": list(matrices)}, (b"".join(matrices.values()),))
+            )
+            matrices.clear()
+        if labels:
+            content: dict[str, Any] = {
+                "op": "labels",
+                "paths": list(labels),
+                "texts": [text for text, _ in labels.values()],
+            }
+            rows = [row for _, row in labels.values()]
+            if all(row is not None for row in rows):
+                content["rows"] = rows
+            out.append(Op(content))
+            labels.clear()
+
+    for op in ops:
         kind = op.content["op"]
-        if kind in ("transforms", "labels"):
-            latest[(kind, "|".join(op.content["paths"]))] = k
-    keep = set(latest.values())
-    return [
-        op
-        for k, op in enumerate(ops)
-        if op.content["op"] not in ("transforms", "labels") or k in keep
-    ]
+        if kind == "transforms":
+            data = op.buffers[0]
+            for k, path in enumerate(op.content["paths"]):
+                matrices.pop(path, None)
+                matrices[path] = data[64 * k : 64 * (k + 1)]
+        elif kind == "labels":
+            rows = op.content.get("rows") or [None] * len(op.content["paths"])
+            for path, text, row in zip(op.content["paths"], op.content["texts"], rows, strict=True):
+                labels.pop(path, None)
+                labels[path] = (text, row)
+        else:
+            end_run()
+            out.append(op)
+    end_run()
+    return out

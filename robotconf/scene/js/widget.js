@@ -37,22 +37,41 @@ async function render({ model, el }) {
   let closed = false;
   const view = Math.random().toString(36).slice(2);
   const pending = [];
+  let replayed = false;
   const onMessage = (msg, buffers) => {
     if (msg.kind === "replay" && msg.view !== view) return;
     if (msg.kind !== "batch" && msg.kind !== "replay") return;
+    // Batches sent before our replay are part of it: applying them too would play an
+    // animation the replay then loads again.
+    if (msg.kind === "replay") replayed = true;
+    else if (!replayed) return;
     if (handle) rcApply(handle.viewer, msg.ops, buffers);
     else pending.push([msg, buffers]);
   };
   model.on("msg:custom", onMessage);
+  // While an animation plays, tell the kernel where it is (4 times a second, and once
+  // when it stops) so the control bar's time slider follows.
+  let reported = 0;
+  let wasPlaying = false;
+  const reportTime = (viewer) => {
+    const animator = viewer.animator;
+    const now = performance.now();
+    if ((animator.playing && now - reported > 250) || (!animator.playing && wasPlaying)) {
+      reported = now;
+      model.send({ kind: "time", value: animator.time, playing: animator.playing });
+    }
+    wasPlaying = animator.playing;
+  };
   // Views drop what was sent before they existed: ask the kernel for the scene log.
   model.send({ kind: "hello", view });
 
   try {
     const MeshCat = await rcTimeout(rcShared().ready, 20000);
     if (closed) return () => {};
-    handle = rcCreateViewer(MeshCat, pane, height);
+    handle = rcCreateViewer(MeshCat, pane, height, reportTime);
     status.remove();
     el.dataset.robotconfScene = "ready";
+    el.robotconfViewer = handle.viewer; // for the page's own tools and benchmarks
     for (const [msg, buffers] of pending.splice(0)) rcApply(handle.viewer, msg.ops, buffers);
   } catch (error) {
     status.textContent =

@@ -1,0 +1,107 @@
+"""What the position labels say and where they stand: precision and decluttering.
+
+A label's precision follows the robot's size: three significant digits of its
+characteristic length, so the paper robot (90 units of links) prints ``70.0`` and a UR5
+(1.19 m) prints ``0.82``, never a bare ``0.8``. Points that coincide at the shown precision (PUMA's
+three wrist frames, a SCARA's stacked frames) share one label, ``M4, M5, M6 (…)``; labels
+of points close together are stacked in rows above their points instead of drawn on top
+of each other (the viewer offsets row ``k`` by ``k`` label heights on screen, and lifts a
+label further while its box overlaps another one).
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from .._errors import InvalidInputError
+
+__all__ = ["LABEL_MODES", "label_digits", "label_rows", "merge_coincident", "check_label_mode"]
+
+#: What the labels show: nothing, the point names, or names with positions.
+LABEL_MODES = ("off", "names", "positions")
+
+
+def label_digits(length: float) -> int:
+    """Decimals that give three significant digits at the robot's size ``length``.
+
+    Examples
+    --------
+    >>> label_digits(70.0), label_digits(1.19), label_digits(0.4), label_digits(2500.0)
+    (1, 2, 3, 0)
+    """
+    if not math.isfinite(length) or length <= 0:
+        return 1
+    return int(min(max(2 - math.floor(math.log10(length)), 0), 15))
+
+
+def label_rows(points: np.ndarray, spacing: float, skip: list[bool] | None = None) -> list[int]:
+    """Stack rows for labels at ``points`` (m, 3): closer than ``spacing`` means stacked.
+
+    Labels flagged in ``skip`` (empty ones) take row 0 and no room.
+
+    Each label takes the lowest row that no earlier label within ``spacing`` holds, so
+    distant labels stay on row 0 and a pile of coincident points becomes a column.
+
+    Examples
+    --------
+    >>> label_rows(np.array([[0, 0, 0], [0, 0, 0.1], [5, 0, 0], [0, 0, 0]]), 1.0)
+    [0, 1, 0, 2]
+    """
+    xyz = np.asarray(points, dtype=float)
+    near = np.linalg.norm(xyz[:, None, :] - xyz[None, :, :], axis=-1) < spacing
+    rows: list[int] = []
+    for i in range(len(xyz)):
+        if skip is not None and skip[i]:
+            rows.append(0)
+            continue
+        taken = {rows[j] for j in range(i) if near[i, j] and not (skip is not None and skip[j])}
+        row = 0
+        while row in taken:
+            row += 1
+        rows.append(row)
+    return rows
+
+
+def merge_coincident(
+    names: list[str], points: np.ndarray, digits: int, positions: bool
+) -> list[str]:
+    """One label per group of points equal at ``digits`` decimals; the others empty.
+
+    The group's first label names every point of it, ``"M4, M5, M6 (0.45, -0.15, 0.43)"``
+    (or ``"M4, M5, M6"`` without ``positions``); an empty text draws nothing.
+
+    Examples
+    --------
+    >>> points = np.array([[0, 0, 0], [1, 0, 0], [1, 0, 1e-4], [2, 0, 0]])
+    >>> merge_coincident(["M1", "M2", "M3", "EE"], points, 1, positions=True)
+    ['M1 (0.0, 0.0, 0.0)', 'M2, M3 (1.0, 0.0, 0.0)', '', 'EE (2.0, 0.0, 0.0)']
+    """
+    from ..kinematics import format_point
+
+    keys = [tuple(round(float(v), digits) + 0.0 for v in p) for p in points]
+    groups: dict[tuple[float, ...], list[int]] = {}
+    for k, key in enumerate(keys):
+        groups.setdefault(key, []).append(k)
+    texts = [""] * len(names)
+    for members in groups.values():
+        name = ", ".join(names[k] for k in members)
+        first = members[0]
+        texts[first] = format_point(name, points[first], digits) if positions else name
+    return texts
+
+
+def check_label_mode(mode: object) -> str:
+    """``True`` → ``"positions"``, ``False`` → ``"off"``, or one of :data:`LABEL_MODES`.
+
+    >>> check_label_mode(True), check_label_mode("names")
+    ('positions', 'names')
+    """
+    if mode is True:
+        return "positions"
+    if mode is False:
+        return "off"
+    if isinstance(mode, str) and mode in LABEL_MODES:
+        return mode
+    raise InvalidInputError("labels", mode, "True, False, 'off', 'names' or 'positions'")
