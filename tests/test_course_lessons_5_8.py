@@ -2,10 +2,12 @@
 
 For every exercise a typical wrong answer must fail its check cell with a hint that names
 the mistake, and the solutions must pass. The hints of matrix exercises come from
-robotconf's checker (``rc.assert_matrix``); the few numeric exercises (a finite-difference
-spike, singular joint values) have their own assert messages. Each notebook runs once:
-the exercises notebook with every answer replaced by a wrong one, the solutions notebook
-as it is.
+robotconf's checker (``rc.assert_matrix``); the numeric exercises (finite-difference
+spikes, singular joint values) use ``rc.check_matrix`` with a tolerance of 0.1 % and add
+a hint of their own, so rounded numbers (3.1416 for π) and text answers (``"[0, pi]"``)
+pass. Each notebook runs once: the exercises notebook with every answer replaced by a
+wrong one, the solutions notebook as it is; lessons 7 and 8 once more with rounded and
+text answers.
 """
 
 from __future__ import annotations
@@ -90,6 +92,8 @@ WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
         ),
         # the slope of the ramp instead of the finite difference across the jump
         "answer_4": ("answer_4 = 1.0", "central difference (q[k+1] - q[k-1]) / (2 dt)"),
+        # the central difference when Simulink's backward one was asked
+        "answer_5": ("answer_5 = -99.0", "backward difference (q[k] - q[k-1]) / dt"),
     },
     "08_workspace_singularities": {
         # the Jacobian written with one row per joint
@@ -98,8 +102,20 @@ WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
         "answer_2": ('answer_2 = "[[-2*sin(q2)]]"', "sign error"),
         # the singular angles in degrees
         "answer_3": ("answer_3 = [0, 180]", "radians (180° = π), not in degrees"),
-        # the elbow singularity instead of the shoulder one
-        "answer_4": ("answer_4 = [0, 0, 0]", "It is the elbow singularity"),
+        # the arm folded back: an elbow singularity, the tip 10 mm off the z axis
+        "answer_4": ("answer_4 = np.pi", "l2 cos q2 + l3 cos(q2 + q3) = 0"),
+    },
+}
+
+# Right answers as students type them: rounded, as text, in another order.
+APPROXIMATE_ANSWERS: dict[str, dict[str, str]] = {
+    "07_velocity_acceleration": {
+        "answer_4": 'answer_4 = "(0.01 - 1.99) / (2 * 0.01)"',
+        "answer_5": "answer_5 = -199.1",  # within 0.1 % of -199
+    },
+    "08_workspace_singularities": {
+        "answer_3": 'answer_3 = "[3.1416, 0]"',  # π rounded, larger first, as text
+        "answer_4": "answer_4 = 2.4189",  # arccos(-3/4) rounded
     },
 }
 
@@ -141,6 +157,12 @@ def test_every_exercise_has_a_wrong_answer_test(lesson):
 def test_solutions_pass_their_checks(lesson):
     errors = _solutions_run(lesson)
     assert errors and not any(errors.values()), errors
+
+
+@pytest.mark.parametrize("lesson", sorted(APPROXIMATE_ANSWERS))
+def test_rounded_and_text_answers_pass(lesson):
+    errors = run_with_answers(_exercises(lesson), APPROXIMATE_ANSWERS[lesson])
+    assert all(errors[variable] == "" for variable in APPROXIMATE_ANSWERS[lesson]), errors
 
 
 @pytest.mark.parametrize(("lesson", "variable"), _cases())

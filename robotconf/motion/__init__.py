@@ -7,8 +7,10 @@ Limits of a run (docs/conventions.md, "Limits of a run")
     :data:`MAX_TIME`, :data:`TIME_RESOLUTION`; the memory budget is
     :func:`robotconf.set_memory_budget`
 Displacement, velocity, acceleration (numpy)
-    :data:`QUANTITIES`, :func:`analytic_dva`, :func:`numeric_dva`,
-    :func:`first_derivative`, :func:`second_derivative`
+    :data:`QUANTITIES`, :func:`analytic_dva`, :func:`numeric_dva` (central differences),
+    :func:`backward_dva` (Simulink's Derivative block), :func:`first_derivative`,
+    :func:`second_derivative`, :func:`backward_derivative`,
+    :func:`backward_second_derivative`
 Tables and statistics (pandas, imported on use)
     :func:`motion_table`, :func:`motion_stats`, :func:`compare_motions`, :data:`STATS`
 
@@ -19,7 +21,16 @@ Tables and statistics (pandas, imported on use)
 array([0., 1., 2.])
 """
 
-from ._dva import QUANTITIES, analytic_dva, first_derivative, numeric_dva, second_derivative
+from ._dva import (
+    QUANTITIES,
+    analytic_dva,
+    backward_derivative,
+    backward_dva,
+    backward_second_derivative,
+    first_derivative,
+    numeric_dva,
+    second_derivative,
+)
 from ._motion import Motion
 from ._settings import MAX_SAMPLE_POINTS, MAX_TIME_SAMPLES, METHODS, SimulationSettings
 from ._simulation import simulate
@@ -49,8 +60,11 @@ __all__ = [
     "QUANTITIES",
     "analytic_dva",
     "numeric_dva",
+    "backward_dva",
     "first_derivative",
     "second_derivative",
+    "backward_derivative",
+    "backward_second_derivative",
     # tables
     "motion_table",
     "motion_stats",

@@ -1,6 +1,6 @@
 """Displacement, velocity and acceleration (DVA) of every frame origin and the end-effector.
 
-Two named ways (docs/conventions.md, "Motion and DVA"), both numpy only and vectorized
+Three named ways (docs/conventions.md, "Motion and DVA"), all numpy only and vectorized
 over the ``T`` samples:
 
 ``analytic``
@@ -19,7 +19,8 @@ over the ``T`` samples:
     geometric Jacobian (:func:`robotconf.kinematics.jacobian`), which the tests check.
 
 ``numeric``
-    Finite differences of the sampled positions, as Simulink's Derivative block does.
+    Central finite differences of the sampled positions (more accurate than Simulink's
+    Derivative block, which is ``backward`` below).
     Velocity: second-order central differences ``(x[k+1] − x[k−1]) / 2dt`` inside and
     second-order one-sided differences at both ends (``numpy.gradient`` with
     ``edge_order=2``). Acceleration: the compact second difference
@@ -27,12 +28,28 @@ over the ``T`` samples:
     ``(2x[0] − 5x[1] + 4x[2] − x[3]) / dt²`` at the ends. Both have error ``O(dt²)`` for
     smooth motion. At a kink of the input (a repeating sequence's corner or jump) the exact
     acceleration is an impulse and these differences show a spike of height ≈ Δv/dt:
-    the spike is real, not noise. Angular velocity comes from ``Ṙ Rᵀ`` with ``Ṙ``
-    differenced the same way as velocity.
+    the spike is real, not noise. A jump that falls on the last sample of a run (or the
+    first) meets the one-sided ``(3x[−1] − 4x[−2] + x[−3]) / 2dt`` instead, about
+    ``3Δx/2dt``: three times an inner velocity spike, an effect of where the data end,
+    not a bigger kink. Angular velocity comes from ``Ṙ Rᵀ`` with ``Ṙ`` differenced the
+    same way as velocity.
+
+``backward``
+    What Simulink's Derivative block outputs: ``Δu/Δt = (u(t) − u(t − dt)) / dt``, the
+    first-order backward difference, and ``0`` at the first sample (the block's initial
+    output). Acceleration is the same block applied to that velocity, as two chained
+    Derivative blocks give it: ``(x[k] − 2x[k−1] + x[k−2]) / dt²`` from the third sample
+    on, ``0`` at the first, and ``v[1]/dt`` at the second (the velocity's step up from the
+    initial 0: a start-up spike that Simulink shows too). Error ``O(dt)`` for smooth
+    motion. Across a jump ``Δx`` of the input the velocity spike is ``Δx/dt`` on one
+    sample, about twice the central difference's ``Δx/2dt`` spread over two, and the
+    last sample of a run is differenced like every other. Angular velocity: ``Ṙ Rᵀ``
+    with ``Ṙ`` by the same backward difference (0 at the first sample).
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from typing import TYPE_CHECKING
 
 import numpy as np
@@ -53,8 +70,11 @@ __all__ = [
     "QUANTITIES",
     "analytic_dva",
     "numeric_dva",
+    "backward_dva",
     "first_derivative",
     "second_derivative",
+    "backward_derivative",
+    "backward_second_derivative",
 ]
 
 #: Quantities per point, in table order. ``displacement`` is position minus the position
@@ -203,12 +223,63 @@ def second_derivative(x: np.ndarray, dt: float) -> np.ndarray:
     return out
 
 
+def backward_derivative(x: np.ndarray, dt: float) -> np.ndarray:
+    """First-order backward difference along the last axis, as Simulink's Derivative block.
+
+    ``(x[k] − x[k−1]) / dt`` for ``k ≥ 1`` and ``0`` at ``k = 0``: the block's initial
+    output is zero, as it has no earlier input to difference with.
+
+    >>> backward_derivative(np.array([0.0, 1.0, 4.0, 9.0]), 1.0)  # x = t²: 2t − 1 (lags dt/2)
+    array([0., 1., 3., 5.])
+    """
+    out = np.empty_like(x)
+    out[..., 0] = 0.0
+    np.subtract(x[..., 1:], x[..., :-1], out=out[..., 1:])
+    out[..., 1:] /= dt
+    return out
+
+
+def backward_second_derivative(x: np.ndarray, dt: float) -> np.ndarray:
+    """Two chained Derivative blocks: :func:`backward_derivative` of the backward velocity.
+
+    ``0`` at ``k = 0``, ``(x[1] − x[0]) / dt²`` at ``k = 1`` (the velocity's step from its
+    initial 0) and ``(x[k] − 2x[k−1] + x[k−2]) / dt²`` from ``k = 2`` on.
+
+    >>> backward_second_derivative(np.array([0.0, 1.0, 4.0, 9.0, 16.0]), 1.0)  # x = t²: 2
+    array([0., 1., 2., 2., 2.])
+    """
+    return backward_derivative(backward_derivative(x, dt), dt)
+
+
 #: Fewest samples the numeric method accepts (the one-sided second difference uses 4).
 MIN_NUMERIC_SAMPLES = 4
 
+_Differentiator = Callable[[np.ndarray, float], np.ndarray]
+
+
+def _differenced_dva(
+    robot: Robot, q: np.ndarray, dt: float, first: _Differentiator, second: _Differentiator
+) -> np.ndarray:
+    """DVA with the given finite differences of the sampled positions and rotations."""
+    poses = pose_components(robot, q)
+    out = _empty(robot, q.shape[0])
+    _positions(robot, poses, out)
+    out[:, _VEL] = first(out[:, _POS], dt)
+    out[:, _ACC] = second(out[:, _POS], dt)
+    rotation = poses[:, :, :3]
+    rate = first(rotation, dt)
+    # ω̂ = Ṙ Rᵀ: only its antisymmetric part is kept (the symmetric part is round-off).
+    spin = np.einsum("iakt,ibkt->iabt", rate, rotation)
+    omega = out[:-1, _OMEGA]
+    omega[:, 0] = 0.5 * (spin[:, 2, 1] - spin[:, 1, 2])
+    omega[:, 1] = 0.5 * (spin[:, 0, 2] - spin[:, 2, 0])
+    omega[:, 2] = 0.5 * (spin[:, 1, 0] - spin[:, 0, 1])
+    out[-1, _OMEGA] = omega[-1]
+    return out
+
 
 def numeric_dva(robot: Robot, q: np.ndarray, dt: float) -> np.ndarray:
-    """DVA by finite differences of the sampled positions (see module notes).
+    """DVA by central finite differences of the sampled positions (see module notes).
 
     Parameters
     ----------
@@ -238,18 +309,35 @@ def numeric_dva(robot: Robot, q: np.ndarray, dt: float) -> np.ndarray:
             f"at least {MIN_NUMERIC_SAMPLES} samples: a later t_end or a smaller dt",
             problem="too few samples for finite differences:",
         )
-    poses = pose_components(robot, q)
-    out = _empty(robot, q.shape[0])
-    _positions(robot, poses, out)
-    out[:, _VEL] = first_derivative(out[:, _POS], dt)
-    out[:, _ACC] = second_derivative(out[:, _POS], dt)
-    rotation = poses[:, :, :3]
-    rate = first_derivative(rotation, dt)
-    # ω̂ = Ṙ Rᵀ: only its antisymmetric part is kept (the symmetric part is round-off).
-    spin = np.einsum("iakt,ibkt->iabt", rate, rotation)
-    omega = out[:-1, _OMEGA]
-    omega[:, 0] = 0.5 * (spin[:, 2, 1] - spin[:, 1, 2])
-    omega[:, 1] = 0.5 * (spin[:, 0, 2] - spin[:, 2, 0])
-    omega[:, 2] = 0.5 * (spin[:, 1, 0] - spin[:, 0, 1])
-    out[-1, _OMEGA] = omega[-1]
-    return out
+    return _differenced_dva(robot, q, dt, first_derivative, second_derivative)
+
+
+def backward_dva(robot: Robot, q: np.ndarray, dt: float) -> np.ndarray:
+    """DVA by backward differences, as Simulink's Derivative block shows them.
+
+    Velocity ``(x[k] − x[k−1]) / dt``, acceleration the same difference of that
+    velocity (two chained blocks); both are 0 at the first sample, the block's initial
+    output (see module notes).
+
+    Parameters
+    ----------
+    robot : Robot
+    q : ndarray, shape (T, n)
+        Coordinates sampled every ``dt`` seconds, ``T ≥ 1``.
+    dt : float
+        Time step (s).
+
+    Returns
+    -------
+    ndarray, shape (n + 1, 5, 3, T)
+        Same layout as :func:`analytic_dva`.
+
+    Examples
+    --------
+    >>> import robotconf as rc
+    >>> robot = rc.Robot([rc.Module("Tx")])
+    >>> t = np.arange(5) * 0.5
+    >>> backward_dva(robot, (2 * t)[:, None], 0.5)[0, 2, 0]  # x = 2t: 0 first, then 2
+    array([0., 2., 2., 2., 2.])
+    """
+    return _differenced_dva(robot, q, dt, backward_derivative, backward_second_derivative)

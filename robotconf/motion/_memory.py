@@ -6,9 +6,10 @@ allocates anything, so a run too big for the machine ends in an
 ``MemoryError`` (or the system killing the process) half-way through.
 
 The per-sample figures below are the peaks ``tracemalloc`` measured (numpy reports its
-buffers to it) for 1 to 40 modules and 10 to 10⁵ samples, both methods, explained term
-by term; the estimate adds :data:`MARGIN` and :data:`FIXED_BYTES` on top, so it is never
-below the measured peak (``tests/test_motion_limits.py`` checks this).
+buffers to it) for 1 to 40 modules and 10 to 10⁵ samples, every method (``backward``
+peaks where ``numeric`` does), explained term by term; the estimate adds :data:`MARGIN`
+and :data:`FIXED_BYTES` on top, so it is never below the measured peak
+(``tests/test_motion_limits.py`` and ``tests/test_motion_backward.py`` check this).
 """
 
 from __future__ import annotations
@@ -54,7 +55,7 @@ _POSES = 96  # each frame's [R | p] in component-major layout (12 floats)
 _POSES_BUILT = 129  # the (T, n, 4, 4) poses that layout is copied from + a finite mask
 _SCREWS = 48  # analytic: each joint's axis and axis point
 _RECURSION = 264  # analytic: v, a, ω, ω̇ and the cross products' temporaries
-_RATES = 152  # numeric, per frame: Ṙ, ω̂ and numpy.gradient's temporaries
+_RATES = 152  # numeric and backward, per frame: Ṙ, ω̂ and the differences' temporaries
 _SIGNAL = 16  # per signal term: its result and Sum's stacked copy
 _SIGNAL_BASE = 64  # per signal: phase, segment index and friends
 
@@ -109,7 +110,8 @@ def simulation_bytes_per_sample(n: int, method: str, signals: Iterable[Signal] =
     ----------
     n : int
         Modules (coordinates); the results cover ``n + 1`` points.
-    method : {"analytic", "numeric"}
+    method : {"analytic", "numeric", "backward"}
+        The two difference methods share one model (same arrays, same temporaries).
     signals : iterable of Signal
         The driving signals; a sum of many terms needs a temporary per term.
 

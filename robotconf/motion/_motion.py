@@ -34,7 +34,8 @@ class Motion:
     q, qd, qdd : ndarray, shape (T, n)
         Coordinates and their first and second derivatives.
     method : str
-        ``"analytic"`` or ``"numeric"``.
+        ``"analytic"``, ``"numeric"`` (central differences) or ``"backward"``
+        (Simulink's Derivative block).
     signals : dict
         Coordinate name → signal, for the driven coordinates.
     points : tuple of str
@@ -84,12 +85,12 @@ class Motion:
 
     @property
     def qd(self) -> np.ndarray:
-        """Coordinate velocities, shape (T, n) (finite differences for ``numeric``)."""
+        """Coordinate velocities, shape (T, n) (finite differences unless ``analytic``)."""
         return self._qd.T
 
     @property
     def qdd(self) -> np.ndarray:
-        """Coordinate accelerations, shape (T, n) (finite differences for ``numeric``)."""
+        """Coordinate accelerations, shape (T, n) (finite differences unless ``analytic``)."""
         return self._qdd.T
 
     def quantity(self, name: str) -> np.ndarray:

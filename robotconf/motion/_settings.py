@@ -26,8 +26,9 @@ from ._time_grid import (
 
 __all__ = ["SimulationSettings", "METHODS", "MAX_TIME_SAMPLES", "MAX_SAMPLE_POINTS"]
 
-#: The two ways of differentiating (docs/conventions.md, "Motion").
-METHODS = ("analytic", "numeric")
+#: The ways of differentiating (docs/conventions.md, "Motion and DVA"): the exact chain
+#: rule, central differences, and Simulink's Derivative block (backward differences).
+METHODS = ("analytic", "numeric", "backward")
 
 #: Default ceiling on samples × points of one run (points = modules + EE). Each
 #: sample-point holds 15 floats (120 bytes), so the default allows about 6 GB of results;
@@ -36,7 +37,10 @@ MAX_SAMPLE_POINTS = 50_000_000
 
 _FIELDS = ("t_end", "dt", "t0", "method")
 _REQUIRED = {"t_end": True, "dt": False, "t0": False, "method": False}
-_METHOD_ALLOWED = "'analytic' (exact chain rule) or 'numeric' (finite differences)"
+_METHOD_ALLOWED = (
+    "'analytic' (exact chain rule), 'backward' (backward differences, as Simulink's "
+    "Derivative block) or 'numeric' (central differences)"
+)
 _SECONDS = "a finite real number of seconds"
 
 
@@ -90,8 +94,10 @@ class SimulationSettings:
         at least :data:`~robotconf.motion.TIME_RESOLUTION` × max(|t0|, |t_end|).
     t0 : float
         First sample time (s), ``|t0| ≤`` 10⁹ s.
-    method : {"analytic", "numeric"}
-        How velocities and accelerations are found (any case; stored in lower case).
+    method : {"analytic", "numeric", "backward"}
+        How velocities and accelerations are found (any case; stored in lower case):
+        the exact chain rule, central differences, or the backward differences of
+        Simulink's Derivative block (see :func:`~robotconf.motion.simulate`).
 
     Times are real numbers of seconds: booleans, complex numbers, dates and durations
     (``datetime``, ``numpy.datetime64``) and text are refused.
@@ -114,6 +120,8 @@ class SimulationSettings:
     {'t_end': 10.0, 'dt': 0.001, 't0': 0.0, 'method': 'analytic'}
     >>> SimulationSettings(0.3, dt=0.1).time_grid()
     array([0. , 0.1, 0.2, 0.3])
+    >>> SimulationSettings(10.0, method="Backward").method  # Simulink's Derivative block
+    'backward'
     >>> SimulationSettings(1.0, dt=0.0)
     Traceback (most recent call last):
     ...

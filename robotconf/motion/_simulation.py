@@ -11,7 +11,15 @@ from .._errors import InvalidInputError
 from .._validation import check_finite_number
 from ..kinematics import point_names
 from ..signals import Constant, Signal
-from ._dva import analytic_dva, first_derivative, numeric_dva, second_derivative
+from ._dva import (
+    analytic_dva,
+    backward_derivative,
+    backward_dva,
+    backward_second_derivative,
+    first_derivative,
+    numeric_dva,
+    second_derivative,
+)
 from ._memory import check_simulation_memory
 from ._motion import Motion
 from ._overflow import check_coordinates_finite, check_results_finite
@@ -81,11 +89,17 @@ def simulate(
         Time step (s), > 0.
     t0 : float
         First sample time (s); displacement is measured from the position here.
-    method : {"analytic", "numeric"}
+    method : {"analytic", "numeric", "backward"}
         ``analytic``: exact chain rule with the signals' own derivatives (default);
-        ``numeric``: second-order finite differences of the sampled positions, like
-        Simulink's Derivative block (see :func:`robotconf.motion.numeric_dva`). Then
-        ``Motion.qd`` and ``Motion.qdd`` are finite differences too.
+        ``numeric``: second-order central differences of the sampled positions
+        (see :func:`robotconf.motion.numeric_dva`);
+        ``backward``: first-order backward differences ``(x[k] − x[k−1]) / dt``, what
+        Simulink's Derivative block outputs, with acceleration from a second block on
+        that velocity (see :func:`robotconf.motion.backward_dva`). Like the block, whose
+        initial output is zero, it gives velocity and acceleration 0 at the first
+        sample, and the acceleration at the second is the velocity's step from that 0
+        divided by ``dt``. With either difference method ``Motion.qd`` and
+        ``Motion.qdd`` are finite differences too.
     max_sample_points : int
         Refuse runs with more samples × points (points = modules + EE); default
         :data:`MAX_SAMPLE_POINTS`. Samples alone never exceed :data:`MAX_TIME_SAMPLES`.
@@ -109,6 +123,13 @@ def simulate(
         exist, fewer than 4 samples with ``numeric``, or results that overflow to inf or
         NaN (named ``signals[q<i>]``, ``signals`` or ``robot``).
 
+    Notes
+    -----
+    At a drop of the paper's sawtooth (``q3`` from ``2 − dt`` to ``0``) the backward
+    ``q̇3`` is ``−(2 − dt)/dt`` (−1999 rad/s at 1 ms) on one sample; the central
+    difference gives ``−(2 − 2dt)/2dt`` (−999 rad/s) on two: Simulink's spikes are about
+    twice as tall. The analytic method has no spike (it reports the one-sided slope).
+
     Examples
     --------
     The paper's demonstration (§3, Figures 16–19): Simulink's default sawtooth on q3.
@@ -126,6 +147,14 @@ def simulate(
     array([  0.,   0., -40.])
     >>> float(motion.table[("EE", "position", "x")].max())  # 30 + 40 cos 0
     70.0
+
+    The same run as the paper's Simulink Derivative blocks see it:
+
+    >>> simulink = simulate(robot, {"q3": signals.RepeatingSequence()}, 10.0, method="backward")
+    >>> simulink.velocity[0, -1] + 0.0  # the block's initial output
+    array([0., 0., 0.])
+    >>> round(float(simulink.qd[2000, 2]), 6)  # t = 2 s: q3 drops from 1.999 to 0
+    -1999.0
     """
     settings = SimulationSettings(t_end, dt, t0, method)
     chosen = _check_signals(robot, signals)
@@ -164,9 +193,14 @@ def _run(
         data = analytic_dva(robot, q.T, qd.T, qdd.T)
     else:
         check_coordinates_finite({"values": q}, chosen, names)
-        data = numeric_dva(robot, q.T, step)
-        qd = first_derivative(q, step)
-        qdd = second_derivative(q, step)
+        if method == "backward":
+            data = backward_dva(robot, q.T, step)
+            qd = backward_derivative(q, step)
+            qdd = backward_second_derivative(q, step)
+        else:
+            data = numeric_dva(robot, q.T, step)
+            qd = first_derivative(q, step)
+            qdd = second_derivative(q, step)
         rates = {"velocities": qd, "accelerations": qdd}
         check_coordinates_finite(rates, chosen, names, finite_differences=True)
     driven = {names[i]: s for i, s in chosen.items()}
