@@ -125,7 +125,10 @@ def _parser() -> argparse.ArgumentParser:
     report.add_argument(
         "--method",
         choices=METHODS,
-        help="derivatives: analytic (exact, default) or numeric (finite differences)",
+        help=(
+            "derivatives: analytic (exact, default), numeric (central differences) or "
+            "backward (Simulink's Derivative block)"
+        ),
     )
     report.add_argument("--out", required=True, metavar="DIR", help="output folder (created)")
     report.add_argument("--length-unit", default="length", help="axis label unit, e.g. mm or m")
