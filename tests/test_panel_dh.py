@@ -182,3 +182,54 @@ def test_a_refused_conversion_shows_the_core_message_beside_the_switch():
     assert panel.robot == robot and panel.dh.convention_prompt.visible
     panel.dh.convention_prompt.cancel_button.click()
     assert panel.errors == {} and panel.dh.convention.value == "standard"
+
+
+def paper_style_arm() -> rc.Robot:
+    """The paper's modules and offsets with every joint about z: a chain DH can hold,
+    though only in modified DH (the offsets sit before each joint)."""
+    return rc.Robot(
+        [rc.Module("Rz"), rc.Module("Rz", a=(0, 0, 20)), rc.Module("Rz", a=(30, 0, 0))],
+        end_effector=(40, 0, 0),
+    )
+
+
+def test_opening_the_dh_table_preselects_the_convention_the_robot_converts_in(rng):
+    arm = paper_style_arm()
+    panel = make_panel(arm)
+    assert panel.dh.convention.value == "standard"  # the table's own convention
+    panel.mode.value = "dh"
+    entry = panel.dh_entry
+    assert entry.prompt.visible and entry.convention.value == "modified"
+    note = entry.note.value
+    assert "modified DH preselected" in note and "standard DH cannot hold it" in note
+    assert "module M3 is offset along x before its row" in note
+    entry.prompt.buttons["convert"].click()  # no convention to pick by hand
+    assert panel.errors == {} and panel.mode.value == "dh"
+    assert panel.dh.convention.value == "modified"
+    assert all(isinstance(link, rc.DHLink) for link in panel.robot.modules)
+    np.testing.assert_allclose(panel.robot.end_effector(), [70, 0, 20], atol=1e-12)
+    for q in rng.uniform(-np.pi, np.pi, size=(10, 3)):
+        np.testing.assert_allclose(panel.robot.end_effector(q), arm.end_effector(q), atol=1e-12)
+
+
+def test_the_tables_convention_stays_when_it_holds_the_robot_or_when_neither_does():
+    panel = dh_panel()
+    panel.mode.value = "modules"  # standard DH rows as modules: standard holds them
+    panel.mode.value = "dh"
+    assert panel.dh_entry.convention.value == "standard"
+    assert "the table's convention, standard DH, holds this robot" in panel.dh_entry.note.value
+    paper = make_panel()  # the paper's Ry joints: no DH table at all
+    paper.mode.value = "dh"
+    assert paper.dh_entry.convention.value == "standard"
+    assert "neither DH convention holds this robot" in paper.dh_entry.note.value
+    paper.dh_entry.prompt.buttons["convert"].click()
+    assert "turns about the y axis" in paper.errors["mode.dh"]
+
+
+def test_the_preselection_note_shows_module_names_as_text():
+    arm = paper_style_arm()
+    links = list(arm.modules)
+    links[2] = links[2].with_name("<b>elbow</b>")
+    panel = make_panel(rc.Robot(links, end_effector=(40, 0, 0)))
+    panel.mode.value = "dh"
+    assert "module &lt;b&gt;elbow&lt;/b&gt; is offset" in panel.dh_entry.note.value

@@ -135,6 +135,9 @@ class ModuleRow:
         # Stable hooks for browser tests and for instructors' custom CSS.
         self.kind.add_class("robotconf-module-kind")
         self.q.slider.add_class("robotconf-module-q")
+        self.remove_button.add_class("robotconf-module-delete")
+        for control in self.offsets:
+            control.box.add_class("robotconf-module-offset")
         observe(self.kind, self.error, self._kind_changed)
         buttons = [self.up_button, self.down_button, self.remove_button]
         if self.is_module:

@@ -50,6 +50,9 @@ class UndoButtons:
         self.redo_button = widgets.Button(
             description="↷", tooltip="redo the change just undone", layout=layout
         )
+        # Stable hooks for browser tests and for instructors' custom CSS.
+        self.undo_button.add_class("robotconf-undo")
+        self.redo_button.add_class("robotconf-redo")
         self.error = ErrorLabel()
         on_click(self.undo_button, self.error, self.undo)
         on_click(self.redo_button, self.error, self.redo)

@@ -120,6 +120,12 @@ class _ModuleAnswers:
             length_step=step,
         )
 
+        # Stable hooks for browser tests and for instructors' custom CSS.
+        self.kind.add_class("robotconf-wizard-kind")
+        for control in self.offsets:
+            control.box.add_class("robotconf-wizard-offset")
+        self.q.box.add_class("robotconf-wizard-q")
+
     def module(self) -> Module:
         ax, ay, az = (c.core_value for c in self.offsets)
         return Module(self.kind.value, (ax, ay, az), self.q.core_value)
@@ -194,9 +200,11 @@ class Wizard:
         ]
         self.step = 0
         self.title = widgets.HTML()
+        self.title.add_class("robotconf-wizard-title")
         self.explanation = widgets.HTML()
         self.formula = widgets.HTMLMath()
         self.preview = widgets.HTML()
+        self.preview.add_class("robotconf-wizard-preview")
         self.body = widgets.VBox()
         self.error = ErrorLabel()
         self.back_button = widgets.Button(description="Back", icon="arrow-left")
@@ -207,6 +215,16 @@ class Wizard:
             tooltip="leave the guided mode; the robot stays as it was",
             disabled=on_cancel is None,
         )
+        # Stable hooks for browser tests and for instructors' custom CSS.
+        self.count.add_class("robotconf-wizard-count")
+        for control in self.end_effector:
+            control.box.add_class("robotconf-wizard-point")
+        for button, name in (
+            (self.back_button, "back"),
+            (self.next_button, "next"),
+            (self.cancel_button, "cancel"),
+        ):
+            button.add_class(f"robotconf-wizard-{name}")
         on_click(self.back_button, self.error, self.back)
         on_click(self.next_button, self.error, self.next)
         if on_cancel is not None:
@@ -224,6 +242,7 @@ class Wizard:
             ],
             layout=widgets.Layout(border="1px solid #ccd", padding="6px"),
         )
+        self.widget.add_class("robotconf-wizard")
         self._show()
 
     # -- steps --------------------------------------------------------------------------
@@ -287,7 +306,9 @@ class Wizard:
         text = "" if robot is None else f"{robot}\n\n{end_effector_text(robot)}"
         summary = preformatted(text) if text else ""
         self._say("The robot you described (Finish loads it into the module list):", [])
-        self.body.children = (widgets.HTML(summary),)
+        shown = widgets.HTML(summary)
+        shown.add_class("robotconf-wizard-summary")
+        self.body.children = (shown,)
 
     def _say(self, text: str, controls: list[widgets.Widget]) -> None:
         self.explanation.value = html.escape(text, quote=False)

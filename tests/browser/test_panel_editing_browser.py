@@ -1,0 +1,188 @@
+"""Editing in the page as a student would: the paper's robot through the guided wizard, then
+a module deleted with its trash button and brought back with ↶.
+
+In JupyterLab the panel starts on another robot (one Tz module), so every check below
+sees a change: the wizard's twelve steps (3 modules: Rz, Ry with a = (0, 0, 20), Ry with
+a = (30, 0, 0), P = (40, 0, 0)) end in the summary's p_EE = (70, 0, 20), and Finish puts
+R_zR_yR_y in the module list, its p_EE in the panel and its red end-effector in the 3D
+pane. Deleting module 2 drops the arm to (70, 0, 0); undo brings the row and its offsets
+back. Set ``ROBOTCONF_BROWSER_SHOTS`` to a folder to keep screenshots of the summary
+(``wizard_summary.png``) and of the finished robot (``finished.png``).
+"""
+
+from __future__ import annotations
+
+import os
+import time
+from pathlib import Path
+
+import numpy as np
+from playwright.sync_api import expect
+
+from .conftest import Lab
+from .lab_driver import NOTEBOOK, open_notebook, pixels, run_cell, write_notebook
+
+CELLS = [
+    "import robotconf as rc\n"
+    'panel = rc.configurator(rc.Robot([rc.Module("Tz", a=(0, 0, 10))], end_effector=(10, 0, 0)))'
+]
+#: The count, three questions per module, the end-effector and the summary.
+STEPS = 1 + 3 * 3 + 1 + 1
+#: A slow kernel (sympy's first formula, the scene) gets this long for each answer, in ms.
+WAIT = 30_000
+
+
+def _in_panel(page, css_class: str):  # type: ignore[no-untyped-def]
+    return page.locator(f"{NOTEBOOK} .{css_class}")
+
+
+def _type(box, value: float) -> None:  # type: ignore[no-untyped-def]
+    """Type ``value`` into a number box; Enter sends it to the kernel."""
+    field = box.locator("input")
+    field.fill(f"{value:g}")
+    field.press("Enter")
+
+
+def _kinds(page) -> list[str]:  # type: ignore[no-untyped-def]
+    selects = _in_panel(page, "robotconf-module-kind").locator("select")
+    shown = [s.evaluate("e => e.options[e.selectedIndex].text") for s in selects.all()]
+    return [text.replace("\xa0", " ") for text in shown]  # ipywidgets shows spaces as nbsp
+
+
+def _red_blob(image: np.ndarray) -> int:
+    """Red pixels whose 5×5 neighbourhood is all red: the end-effector's sphere, not the
+    one-pixel red x axis at the base (``red_centroid`` counts both)."""
+    r, g, b = image[..., 0], image[..., 1], image[..., 2]
+    red = (r > 140) & (g < 90) & (b < 90)
+    core = red.copy()
+    for dy in range(-2, 3):
+        for dx in range(-2, 3):
+            core &= np.roll(red, (dy, dx), axis=(0, 1))
+    return int(core.sum())
+
+
+def _red_end_effector(page, canvas) -> int:  # type: ignore[no-untyped-def]
+    """The end-effector's red pixels in the 3D pane, polled until drawn (or 15 s passed)."""
+    count = 0
+    for _ in range(60):
+        count = _red_blob(pixels(canvas))
+        if count > 10:
+            break
+        page.wait_for_timeout(250)
+    return count
+
+
+def _answer_step(page, step: int, question: str) -> None:  # type: ignore[no-untyped-def]
+    """Wait until the wizard shows step ``step`` (1-based) asking ``question``."""
+    expect(_in_panel(page, "robotconf-wizard-title")).to_contain_text(
+        f"Step {step} of {STEPS}", timeout=WAIT
+    )
+    expect(page.locator(NOTEBOOK).get_by_text(question).first).to_be_visible(timeout=WAIT)
+
+
+def _next(page) -> None:  # type: ignore[no-untyped-def]
+    _in_panel(page, "robotconf-wizard-next").click()
+
+
+def _module(page, index: int, kind: str, offsets: tuple[float, float, float]) -> None:  # type: ignore[no-untyped-def]
+    """Module ``index`` (0-based): its type, its offsets and q = 0, step by step."""
+    first = 2 + 3 * index
+    number = index + 1
+    _answer_step(page, first, f"Module {number}: which movement?")
+    labels = {"Rz": "3 Rz", "Ry": "2 Ry"}
+    _in_panel(page, "robotconf-wizard-kind").locator("select").select_option(label=labels[kind])
+    axis = kind[1]
+    _answer_step(page, first, f"the module's own {axis} axis")
+    _next(page)
+    _answer_step(page, first + 1, f"Module {number} ({kind}): where is its frame origin")
+    boxes = _in_panel(page, "robotconf-wizard-offset")
+    expect(boxes).to_have_count(3, timeout=WAIT)
+    for i, value in enumerate(offsets):
+        _type(boxes.nth(i), value)
+    # The numeric A_i follows the boxes: its last column is the typed offsets.
+    preview = _in_panel(page, "robotconf-wizard-preview")
+    for value in offsets:
+        expect(preview).to_contain_text(f"{value:g} ]", timeout=WAIT)
+    _next(page)
+    _answer_step(page, first + 2, f"Module {number} ({kind}): its coordinate q")
+    _type(_in_panel(page, "robotconf-wizard-q"), 0.0)
+    expect(preview).to_contain_text(f"A_{number} at q{number} = 0°", timeout=WAIT)
+    _next(page)
+
+
+def _shoot_below_the_view(page, path: Path) -> None:  # type: ignore[no-untyped-def]
+    """Screenshot with the wizard scrolled up to the sticky 3D view's lower edge, as a
+    student scrolls to read it (scrolled into view, it would sit under the view)."""
+    wizard = _in_panel(page, "robotconf-wizard").first
+    wizard.scroll_into_view_if_needed()
+    view = page.locator(f"{NOTEBOOK} .robotconf-view").first.bounding_box()
+    top = wizard.bounding_box()
+    assert view is not None and top is not None
+    page.mouse.move(view["x"] + 10, view["y"] + view["height"] + 20)
+    page.mouse.wheel(0, top["y"] - (view["y"] + view["height"]))
+    page.wait_for_timeout(500)
+    page.screenshot(path=str(path))
+
+
+def test_the_papers_robot_through_the_wizard_and_a_delete_undone(lab: Lab, page) -> None:  # type: ignore[no-untyped-def]
+    write_notebook(lab.root / "editing.ipynb", CELLS)
+    open_notebook(page, lab.url("editing.ipynb"))
+    started = time.monotonic()
+    run_cell(page, 0)
+    page.wait_for_selector("[data-robotconf-scene='ready']", timeout=60_000)
+    ee = _in_panel(page, "robotconf-ee").first
+    expect(ee).to_contain_text("p_EE = (10, 0, 10)", timeout=WAIT)
+    canvas = page.locator(f"{NOTEBOOK} [data-robotconf-scene] canvas").first
+
+    # -- the paper's questionnaire, clicked through ---------------------------------------
+    page.locator(f"{NOTEBOOK} .widget-toggle-button", has_text="Guided").first.click()
+    _answer_step(page, 1, "How many modules")
+    _type(_in_panel(page, "robotconf-wizard-count"), 3)
+    _next(page)
+    _module(page, 0, "Rz", (0, 0, 0))
+    _module(page, 1, "Ry", (0, 0, 20))
+    _module(page, 2, "Ry", (30, 0, 0))
+    _answer_step(page, STEPS - 1, "The end-effector point P")
+    point = _in_panel(page, "robotconf-wizard-point")
+    expect(point).to_have_count(3, timeout=WAIT)
+    for i, value in enumerate((40, 0, 0)):
+        _type(point.nth(i), value)
+    _next(page)  # at once, as a student would: the summary shows whether Px arrived first
+    _answer_step(page, STEPS, "The robot you described")
+    summary = _in_panel(page, "robotconf-wizard-summary")
+    expect(summary).to_contain_text("p_EE = (70, 0, 20)", timeout=WAIT)
+    finish = _in_panel(page, "robotconf-wizard-next")
+    expect(finish).to_have_text("Finish")
+    if shots := os.environ.get("ROBOTCONF_BROWSER_SHOTS"):
+        _shoot_below_the_view(page, Path(shots) / "wizard_summary.png")
+    finish.click()
+
+    # The list editor shows the robot, the panel its p_EE and the scene its end-effector.
+    expect(ee).to_contain_text("p_EE = (70, 0, 20)", timeout=WAIT)
+    rows = _in_panel(page, "robotconf-module-kind")
+    expect(rows).to_have_count(3, timeout=WAIT)
+    assert _kinds(page) == ["3 Rz", "2 Ry", "2 Ry"]
+    # The wizard's preview grew the robot a module at a time, and the scene reframes only
+    # when the size changes more than twofold: the last step (P, 50 → 90 long) kept the
+    # camera and the end-effector outside the pane. "fit" frames it, as a student would.
+    page.locator(f"{NOTEBOOK} .robotconf-scene-controls button", has_text="fit").click()
+    assert _red_end_effector(page, canvas) > 10, "no red end-effector in the 3D pane"
+    if shots:
+        page.screenshot(path=str(Path(shots) / "finished.png"))
+
+    # -- module 2 deleted with its trash button, and undone --------------------------------
+    offsets = _in_panel(page, "robotconf-module-offset").locator("input")
+    assert [offsets.nth(i).input_value() for i in (3, 4, 5)] == ["0", "0", "20"]
+    _in_panel(page, "robotconf-module-delete").nth(1).click()
+    expect(ee).to_contain_text("p_EE = (70, 0, 0)", timeout=WAIT)  # l1 = 20 went with it
+    expect(rows).to_have_count(2, timeout=WAIT)
+    assert _kinds(page) == ["3 Rz", "2 Ry"]
+    _in_panel(page, "robotconf-undo").click()
+    expect(ee).to_contain_text("p_EE = (70, 0, 20)", timeout=WAIT)
+    expect(rows).to_have_count(3, timeout=WAIT)
+    assert _kinds(page) == ["3 Rz", "2 Ry", "2 Ry"]
+    expect(offsets).to_have_count(9, timeout=WAIT)
+    assert [offsets.nth(i).input_value() for i in (3, 4, 5)] == ["0", "0", "20"]
+    assert [offsets.nth(i).input_value() for i in (6, 7, 8)] == ["30", "0", "0"]
+    assert not page.errors, page.errors
+    assert time.monotonic() - started < 60
