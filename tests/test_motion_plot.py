@@ -94,3 +94,27 @@ def test_unknown_point() -> None:
     pattern = r"point: unknown module 'M4'; allowed: .*\(M1, M2, M3\).*or 'EE'"
     with pytest.raises(ValueError, match=pattern):
         motion.plot("M4")
+
+
+def test_every_point_and_the_other_method_dashed() -> None:
+    robot = paper_robot()
+    exact = simulate(robot, {"q3": RepeatingSequence()}, t_end=4.0, dt=1e-2)
+    approx = simulate(robot, {"q3": RepeatingSequence()}, t_end=4.0, dt=1e-2, method="numeric")
+    fig = plot_motion(exact, "all", compare=approx, length_unit="mm")
+    axes = np.array(fig.axes).reshape(3, 3)
+    lines = axes[1, 0].lines[:8]  # 4 points × 2 methods, then the kink markers
+    assert [line.get_linestyle() for line in lines] == ["-"] * 4 + ["--"] * 4
+    for index, line in enumerate(lines[4:]):
+        np.testing.assert_array_equal(line.get_ydata(), approx.velocity[:, index, 0])
+    # The axes fit the analytic curves; the numeric spikes at the jumps run off them.
+    low, high = axes[1, 0].get_ylim()
+    assert high < np.abs(approx.velocity[:, -1, 0]).max()
+    assert "numeric dashed, its spikes cut at the axes" in fig._suptitle.get_text()
+    assert [t.get_text() for t in fig.legends[0].get_texts()] == ["M1", "M2", "M3", "EE"]
+
+
+def test_compare_needs_the_same_robot_and_time_grid() -> None:
+    motion = simulate(paper_robot(), {}, t_end=1.0, dt=0.1)
+    other = simulate(paper_robot(), {}, t_end=1.0, dt=0.05)
+    with pytest.raises(ValueError, match="compare: another robot or time grid"):
+        plot_motion(motion, compare=other)

@@ -36,7 +36,7 @@ def edit(panel: Configurator) -> None:
     panel.modules.rows[2].offsets[0].box.value = 35.0
     editor = panel.motion_section.editors[0]
     editor.kind.value = "Sine"
-    editor.parameters["amplitude"].value = 0.5
+    editor.parameters["amplitude"].value = 30.0  # degrees, the panel's angle unit
     panel.motion_section.t_end.value = 3.0
     panel.motion_section.dt.value = 0.05
     panel.motion_section.method.value = "numeric"
@@ -73,12 +73,12 @@ def test_every_valid_change_is_saved_and_a_new_panel_gets_it_back(tmp_path):
     assert setup.robot == panel.robot
     assert setup.robot.q[1] == pytest.approx(np.deg2rad(-30))  # q is part of the robot
     assert setup.robot.modules[2].a[0] == 35.0
-    assert setup.signals == {"q1": signals.Sine(amplitude=0.5)}
+    assert setup.signals == {"q1": signals.Sine(amplitude=np.deg2rad(30.0))}
     assert setup.simulate_kwargs() == {"t_end": 3.0, "dt": 0.05, "method": "numeric"}
 
     again = bound(path)  # a kernel restart: the same cell runs again
     assert again.robot == panel.robot
-    assert again.motion_section.signals() == {"q1": signals.Sine(amplitude=0.5)}
+    assert again.motion_section.signals() == {"q1": signals.Sine(amplitude=np.deg2rad(30.0))}
     assert again.motion_section.settings() == {"t_end": 3.0, "dt": 0.05, "method": "numeric"}
     assert again.modules.rows[1].q.box.value == pytest.approx(-30.0)
     assert "Loaded from <code>" in again.binding.widget.value

@@ -25,7 +25,7 @@ def edited_panel():
     panel.extras.point[1].box.value = 5.0
     panel.motion_section.editors[2].kind.value = "RepeatingSequence"
     panel.motion_section.editors[0].kind.value = "Sine"
-    panel.motion_section.editors[0].parameters["amplitude"].value = 0.5
+    panel.motion_section.editors[0].parameters["amplitude"].value = 30.0  # degrees
     panel.motion_section.method.value = "numeric"
     return panel
 
@@ -41,7 +41,7 @@ def test_save_then_load_round_trip(tmp_path):
     assert other.robot == panel.robot
     assert other.motion_section.settings() == {"t_end": 3.0, "dt": 0.05, "method": "numeric"}
     assert other.motion_section.signals() == {
-        "q1": signals.Sine(amplitude=0.5),
+        "q1": signals.Sine(amplitude=np.deg2rad(30.0)),
         "q3": signals.RepeatingSequence(),
     }
     assert [row.q.box.value for row in other.modules.rows] == pytest.approx([0, -30, 0])
@@ -117,7 +117,7 @@ def test_configurator_function_displays_and_returns_the_panel(capsys):
 
 def test_default_scene_is_the_real_scene_or_a_clear_placeholder():
     panel = rc.Configurator(paper_robot())
-    assert panel.scene.widget is panel.results.children[0]
+    assert panel.scene.widget in panel.view.children  # beside the editor, no tab
     panel.modules.rows[0].q.box.value = 45.0  # whatever the scene is, it keeps up
     np.testing.assert_allclose(np.asarray(panel.scene.q, dtype=float), panel.robot.q)
 

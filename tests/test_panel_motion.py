@@ -15,9 +15,9 @@ def test_one_signal_editor_per_coordinate_with_units():
     panel = make_panel()
     editors = panel.motion_section.editors
     assert [e.name for e in editors] == ["q1", "q2", "q3"]
-    assert "(rad)" in editors[0].label.value
+    assert "[deg]" in editors[0].label.value  # the panel's angle unit
     panel.modules.rows[2].kind.value = "Tz"
-    assert "(length)" in panel.motion_section.editors[2].label.value
+    assert "[units]" in panel.motion_section.editors[2].label.value  # its length unit
 
 
 def test_signal_parameters_come_from_the_core_classes():

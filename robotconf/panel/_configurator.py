@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import html
 import os
+import re
 from collections.abc import Callable, Iterator, Sequence
 from pathlib import Path
 from typing import Any
@@ -29,6 +30,7 @@ from ._dh_table import DHTable
 from ._errors_display import ErrorLabel, collect_errors
 from ._exports import ExportsSection
 from ._files_section import FilesSection
+from ._layout import PANEL_CLASS, stylesheet, view_column, workspace
 from ._matrices_view import MatricesView, end_effector_text
 from ._module_list import ModuleList
 from ._motion_section import MotionSection
@@ -38,16 +40,44 @@ from ._robot_extras import RobotExtras
 from ._scene_slot import default_scene_factory
 from ._setup_io import setup_from, setup_to_json
 from ._undo_buttons import UndoButtons
+from ._units import LENGTH_UNITS, Units
 from ._wizard import Wizard
 
 __all__ = ["Configurator", "configurator"]
 
 _MODES = (("Modules", "modules"), ("DH table", "dh"), ("Guided", "wizard"))
-_SCENE_TAB, _MATRICES_TAB, _MOTION_TAB, _FILES_TAB = range(4)
+#: The result tabs under the editor and the 3D view (the view is no tab: it stays in
+#: sight). Motion first: the matrices' symbolic view is computed only while it shows.
+_MOTION_TAB, _MATRICES_TAB, _FILES_TAB = range(3)
 
 
 def _default_robot() -> Robot:
     return preset("paper")
+
+
+def length_unit_dropdown(unit: str) -> widgets.Dropdown:
+    """The length-unit choice of the header row, showing ``unit``.
+
+    >>> length_unit_dropdown("mm").value, length_unit_dropdown("ft").options[-1]
+    ('mm', 'ft')
+    """
+    # Letters, digits, spaces and dots only: the name goes into descriptions, which
+    # MathJax would typeset ($…$), and into HTML.
+    if not isinstance(unit, str) or not re.fullmatch(r"[\w µ.]{1,12}", unit):
+        raise InvalidInputError(
+            "length_unit", unit, f"a unit name of up to 12 letters, such as {LENGTH_UNITS[1:]}"
+        )
+    return widgets.Dropdown(
+        options=tuple(dict.fromkeys((*LENGTH_UNITS, unit))),
+        value=unit,
+        description="length",
+        tooltip=(
+            "the unit of the robot's lengths, named in labels, tables and plots "
+            "(lengths are not converted: robot files carry no unit)"
+        ),
+        style={"description_width": "44px"},
+        layout=widgets.Layout(width="130px"),
+    )
 
 
 class Configurator:
@@ -64,6 +94,11 @@ class Configurator:
         ``update(q)`` (``animate(motion)`` optional). Default: :class:`robotconf.scene.Scene`.
     degrees : bool
         Show angles in degrees (a toggle in the panel switches).
+    length_unit : str
+        The unit of the robot's lengths, named in every label, table and plot (``"mm"``,
+        ``"cm"``, ``"m"``, ``"in"``; default ``"units"``, the paper's plain units). A
+        dropdown in the panel switches; lengths are never converted (robot files carry
+        no unit), so the core's numbers are the numbers shown.
     t_end, dt : float
         Initial simulation settings (s).
     method : {"analytic", "numeric"}
@@ -85,6 +120,11 @@ class Configurator:
         The ↶ ↷ buttons and their history of robots (:meth:`undo`, :meth:`redo`).
     motion : Motion or None
         The last simulation (``None`` before Run).
+    units : Units
+        The length unit's name and degrees or radians, as the header row chooses them.
+    view : ipywidgets.VBox
+        The end-effector line and the 3D scene: beside the editor, or above it and
+        pinned while the editor scrolls (``robotconf/panel/_layout.py``).
     errors : dict
         Control key → message of every input the core refused right now.
 
@@ -116,6 +156,7 @@ class Configurator:
         *,
         scene_factory: Callable[[Robot], Any] | None = None,
         degrees: bool = True,
+        length_unit: str = "units",
         t_end: float = 10.0,
         dt: float = 0.01,
         method: str = "analytic",
@@ -150,6 +191,9 @@ class Configurator:
             style={"button_width": "48px"},
         )
         self.angle_unit_error = ErrorLabel()
+        self.length_unit = length_unit_dropdown(length_unit)
+        self.length_unit.add_class("robotconf-length-unit")
+        self.length_unit_error = ErrorLabel()
         self.modules = ModuleList(self._edited)
         self.dh = DHTable(self._edited, self._convert_convention)
         self.wizard = Wizard(
@@ -169,6 +213,7 @@ class Configurator:
             method=method,
             app=self.app,
             on_change=self.binding.changed,
+            units=self.units,
         )
         self.exports = ExportsSection(
             lambda: self._robot,
@@ -184,17 +229,15 @@ class Configurator:
         factory = scene_factory or default_scene_factory(scene_height)
         self.scene = factory(robot)
         self.results = widgets.Tab(
-            children=[
-                self.scene.widget,
-                self.matrices.widget,
-                self.motion_section.widget,
-                self.files.widget,
-            ],
-            titles=("3D scene", "Matrices", "Motion", "Save / Load"),
+            children=[self.motion_section.widget, self.matrices.widget, self.files.widget],
+            titles=("Motion", "Matrices", "Save / Load"),
         )
         self._editor_box = widgets.VBox()
+        self.view = view_column([self.ee_label, self.scene.widget])
+        self.matrices.widget.add_class("robotconf-matrices-tab")  # found by browser tests
         self.widget = widgets.VBox(
             [
+                stylesheet(),
                 self.title,
                 widgets.HBox([self.binding.widget, self.binding.error.widget]),
                 widgets.HBox(
@@ -206,27 +249,23 @@ class Configurator:
                         self.mode_error.widget,
                         self.angle_unit,
                         self.angle_unit_error.widget,
+                        self.length_unit,
+                        self.length_unit_error.widget,
                     ],
                     layout=widgets.Layout(flex_flow="row wrap", align_items="center"),
                 ),
                 self.dh_entry.widget,
-                widgets.HBox(
-                    [
-                        widgets.Box(
-                            [self._editor_box],
-                            layout=widgets.Layout(min_width="560px", flex="1 1 560px"),
-                        ),
-                        widgets.VBox(
-                            [self.ee_label, self.results],
-                            layout=widgets.Layout(min_width="420px", flex="1 1 520px"),
-                        ),
-                    ],
-                    layout=widgets.Layout(flex_flow="row wrap", align_items="flex-start"),
-                ),
-            ]
+                # The robot stays in sight while its sliders move: beside the editor, or
+                # above it and pinned (robotconf/panel/_layout.py).
+                workspace(self._editor_box, self.view),
+                self.results,
+            ],
+            layout=widgets.Layout(overflow="visible"),
         )
+        self.widget.add_class(PANEL_CLASS)
         self._mode_handler = observe(self.mode, self.mode_error, self._mode_changed)
         observe(self.angle_unit, self.angle_unit_error, lambda c: self._set_degrees(c["new"]))
+        observe(self.length_unit, self.length_unit_error, lambda _: self._units_changed())
         # Showing the Matrices tab computes the symbolic view: its failures show there.
         observe(self.results, self.matrices.error, self._tab_changed, "selected_index")
         self.matrices.set_visible(False)
@@ -246,6 +285,11 @@ class Configurator:
     def motion(self) -> Motion | None:
         """The last simulation, or ``None`` before the first successful Run."""
         return self.motion_section.motion
+
+    @property
+    def units(self) -> Units:
+        """The units the panel shows: the length unit's name and degrees or radians."""
+        return Units(str(self.length_unit.value), bool(self.angle_unit.value))
 
     @property
     def errors(self) -> dict[str, str]:
@@ -409,9 +453,7 @@ class Configurator:
             self.motion_section.mark_stale(robot)
         self.matrices.show(robot)
         self.exports.show(robot)
-        self.ee_label.value = (
-            f"<b>End-effector</b> <code>{html.escape(end_effector_text(robot))}</code>"
-        )
+        self._show_end_effector()
         if record:
             self.history.record(robot, coalesce, None if order is None else list(order))
         self.presets.show(robot)
@@ -448,6 +490,19 @@ class Configurator:
     def _set_degrees(self, degrees: bool) -> None:
         for editor in (self.modules, self.dh, self.wizard):
             editor.set_degrees(degrees)
+        self._units_changed()
+
+    def _units_changed(self) -> None:
+        """Every view in the units now chosen; the robot and the signals stay as they are."""
+        self.motion_section.set_units(self.units)
+        self._show_end_effector()
+
+    def _show_end_effector(self) -> None:
+        unit = self.units.length
+        self.ee_label.value = (
+            f"<b>End-effector</b> <code>{html.escape(end_effector_text(self._robot))}</code> "
+            f"<small>[{html.escape(unit)}]</small>"
+        )
 
     def _wizard_finished(self, robot: Robot) -> None:
         self._load_robot(robot)
@@ -473,8 +528,7 @@ class Configurator:
     def _animate(self, motion: Motion) -> None:
         animate = getattr(self.scene, "animate", None)
         if animate is not None:
-            self.results.selected_index = _SCENE_TAB
-            animate(motion)
+            animate(motion)  # the view is always shown: no tab to switch to
 
     def _error_items(self) -> Iterator[tuple[str, ErrorLabel]]:
         yield "preset", self.preset_error
@@ -482,6 +536,7 @@ class Configurator:
         yield "mode", self.mode_error
         yield "mode.dh", self.dh_entry.prompt.error
         yield "angle_unit", self.angle_unit_error
+        yield "length_unit", self.length_unit_error
         yield from self.matrices.error_items()
         yield from self.modules.error_items()
         yield from self.dh.error_items()
@@ -504,8 +559,8 @@ def configurator(
         (``rc.configurator("my_robot.json")``) keeps the work in that file: the panel
         loads it when it exists and saves every valid change to it.
     **options
-        Passed to :class:`Configurator` (``scene_factory``, ``degrees``, ``t_end``, ``dt``,
-        ``method``, ``scene_height``, ``app``).
+        Passed to :class:`Configurator` (``scene_factory``, ``degrees``, ``length_unit``,
+        ``t_end``, ``dt``, ``method``, ``scene_height``, ``app``).
 
     Returns
     -------

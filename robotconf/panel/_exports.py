@@ -231,8 +231,9 @@ class ExportsSection:
             raise InvalidInputError(
                 "motion", None, "a motion: press Run on the Motion tab first", "nothing to plot:"
             )
-        point = results.point.value if results.point.value in motion.points else "EE"
-        figure = motion.plot(point, displacement=results.displacement.value, figsize=(10, 6.5))
+        # The figure the plot tab shows: its point (or all), units and overlay.
+        point = results.point.value if results.point.value in motion.points else "all"
+        figure = results.figure()
         return self._figure(figure, f"{file_stem(motion.robot.name)}_dva_{file_stem(point)}")
 
     def _scene_html(self) -> Download:

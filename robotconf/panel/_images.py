@@ -7,10 +7,12 @@ import html
 import io
 from typing import TYPE_CHECKING
 
+import ipywidgets as widgets
+
 if TYPE_CHECKING:
     from matplotlib.figure import Figure
 
-__all__ = ["figure_png", "data_uri", "download_link"]
+__all__ = ["figure_png", "data_uri", "download_link", "responsive_image"]
 
 
 def figure_png(figure: Figure, dpi: int = 80) -> bytes:
@@ -18,6 +20,21 @@ def figure_png(figure: Figure, dpi: int = 80) -> bytes:
     buffer = io.BytesIO()
     figure.savefig(buffer, format="png", dpi=dpi)
     return buffer.getvalue()
+
+
+def responsive_image() -> widgets.Image:
+    """A PNG image widget that fits its column: shown at its own size when there is room,
+    scaled down (height following) when the column is narrower, never cut off.
+
+    >>> responsive_image().layout.max_width
+    '100%'
+    """
+    # The <img> is the widget's own element: max-width resolves against the box it is in,
+    # and height auto keeps the aspect ratio; a fixed width would overflow a narrow column.
+    return widgets.Image(
+        format="png",
+        layout=widgets.Layout(max_width="100%", height="auto", width="auto", object_fit="contain"),
+    )
 
 
 def data_uri(content: bytes | str, mime: str) -> str:

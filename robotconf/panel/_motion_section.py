@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import html
 from collections.abc import Callable, Iterator, Mapping, Sequence
 from typing import Any
 
@@ -14,12 +15,13 @@ from ..signals import Signal
 from ._callbacks import observe, on_click
 from ._errors_display import ErrorLabel
 from ._motion_results import MotionResults
+from ._units import Units
 
 __all__ = ["MotionSection"]
 
 
 def _unit(robot: Robot, i: int) -> str:
-    return robot.modules[i].unit or "ignored"  # type: ignore[attr-defined]
+    return robot.modules[i].unit  # type: ignore[attr-defined,no-any-return]
 
 
 class MotionSection:
@@ -43,6 +45,8 @@ class MotionSection:
         The panel runs without cells around it (Voilà): no hint to type code in a cell.
     on_change : callable, optional
         Called after the user changed a signal or a time setting (the bound file saves).
+    units : Units, optional
+        The panel's units for signal parameters, tables and plots (default: the core's).
 
     Examples
     --------
@@ -66,17 +70,19 @@ class MotionSection:
         method: str = "analytic",
         app: bool = False,
         on_change: Callable[[], None] | None = None,
+        units: Units | None = None,
     ):
         self._robot = robot
+        self.units = units or Units(degrees=False)
         self._on_change = on_change or (lambda: None)
         self._t0 = 0.0
         self.motion: Motion | None = None
         self.editors: list[Any] = []
         self.t_end = widgets.FloatText(
-            value=t_end, description="t_end (s)", layout=widgets.Layout(width="170px")
+            value=t_end, description="t_end [s]", layout=widgets.Layout(width="170px")
         )
         self.dt = widgets.FloatText(
-            value=dt, description="dt (s)", layout=widgets.Layout(width="170px")
+            value=dt, description="dt [s]", layout=widgets.Layout(width="170px")
         )
         self.method = widgets.ToggleButtons(
             options=METHODS,
@@ -89,16 +95,16 @@ class MotionSection:
         )
         self.setting_errors = {name: ErrorLabel() for name in ("t_end", "dt", "method")}
         self.run_button = widgets.Button(description="Run", icon="play", button_style="primary")
+        self.run_button.add_class("robotconf-run")  # browser tests find it by this
         self.status = widgets.HTML()
         self.run_error = ErrorLabel()
-        self.results = MotionResults(animate, app=app)
+        self.results = MotionResults(animate, app=app, units=self.units)
         self._editors_box = widgets.VBox()
+        self.signals_note = widgets.HTML()
+        self._show_signals_note()
         self.widget = widgets.VBox(
             [
-                widgets.HTML(
-                    "<b>Signals</b> <small>(values in the coordinate's unit: rad or length; "
-                    "a held coordinate keeps its slider value)</small>"
-                ),
+                self.signals_note,
                 self._editors_box,
                 widgets.HBox([self.t_end, self.setting_errors["t_end"].widget]),
                 widgets.HBox([self.dt, self.setting_errors["dt"].widget]),
@@ -131,11 +137,28 @@ class MotionSection:
                 editor = old[source]
                 editor.rename(f"q{i + 1}", _unit(robot, i))
             else:
-                editor = SignalEditor(f"q{i + 1}", _unit(robot, i), self._on_change)
+                editor = SignalEditor(
+                    f"q{i + 1}", _unit(robot, i), self._on_change, units=self.units
+                )
             editors.append(editor)
         self.editors = editors
         self._editors_box.children = tuple(e.widget for e in editors)
         self.mark_stale(robot)
+
+    def set_units(self, units: Units) -> None:
+        """Show signals, tables and plots in ``units``; the signals themselves stay."""
+        self.units = units
+        for editor in self.editors:
+            editor.set_units(units)
+        self._show_signals_note()
+        self.results.set_units(units)
+
+    def _show_signals_note(self) -> None:
+        self.signals_note.value = (
+            f"<b>Signals</b> <small>(typed in {self.units.angle}, "
+            f"{html.escape(self.units.length)} and s; the core signal under each is in "
+            "radians. A held coordinate keeps its slider value.)</small>"
+        )
 
     def signals(self) -> dict[str, Signal] | None:
         """Coordinate name → signal for the driven coordinates, or ``None`` if one is invalid."""
@@ -213,7 +236,7 @@ class MotionSection:
             return None
         self.motion = motion
         self.status.value = _ran(motion)
-        self.results.show(motion)
+        self.results.show(motion, settings)
         return motion
 
     def mark_stale(self, robot: Robot) -> None:

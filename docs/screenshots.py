@@ -1,0 +1,215 @@
+"""Screenshots of the configurator for docs/panel.md, taken from the real thing.
+
+Starts JupyterLab on 127.0.0.1 in a temporary folder, drives Debian's Chromium
+(``/usr/bin/chromium``, or ``$ROBOTCONF_CHROMIUM``; Playwright downloads nothing) at
+1280 × 900 with the file browser open, runs the paper's workflow (the paper's robot,
+lengths in mm, the sawtooth on q3, Run) and writes ``docs/img/panel_*.png``, each reduced
+to 256 colours so that it stays small; the last one at 1920 × 1080. Run it again
+whenever the panel changes::
+
+    .venv/bin/python docs/screenshots.py
+
+Every process it starts is stopped at the end, also when a step fails.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import os
+import secrets
+import socket
+import subprocess
+import sys
+import tempfile
+import time
+import urllib.request
+from collections.abc import Callable, Iterator
+from io import BytesIO
+from pathlib import Path
+from typing import Any
+
+ROOT = Path(__file__).resolve().parents[1]
+sys.path.insert(0, str(ROOT))  # the browser tests' helpers drive the same workflow
+
+from tests.browser.lab_driver import open_notebook, write_notebook  # noqa: E402
+from tests.browser.paper_workflow import (  # noqa: E402
+    PANEL_CELL,
+    SCROLL_JS,
+    choose_length_unit,
+    choose_tab,
+    dismiss_news,
+    rects,
+    run_paper_workflow,
+    show_panel,
+    wait_for_plot,
+)
+
+OUT = ROOT / "docs" / "img"
+CHROMIUM = os.environ.get("ROBOTCONF_CHROMIUM", "/usr/bin/chromium")
+VIEWPORT, WIDE = {"width": 1280, "height": 900}, {"width": 1920, "height": 1080}
+#: Largest PNG written (bytes): the docs stay light to clone.
+MAX_BYTES = 200_000
+
+
+@contextlib.contextmanager
+def jupyter_lab(root: Path) -> Iterator[str]:
+    """A JupyterLab serving ``root``; yields the URL of ``panel.ipynb`` in a fresh layout."""
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        port = sock.getsockname()[1]
+    token = secrets.token_hex(16)
+    env = dict(
+        os.environ,
+        JUPYTER_CONFIG_DIR=str(root / ".jupyter-config"),
+        JUPYTER_RUNTIME_DIR=str(root / ".jupyter-runtime"),
+        JUPYTERLAB_SETTINGS_DIR=str(root / ".lab-settings"),
+        JUPYTERLAB_WORKSPACES_DIR=str(root / ".lab-workspaces"),
+        MPLBACKEND="Agg",
+    )
+    command = [
+        sys.executable,
+        "-m",
+        "jupyter",
+        "lab",
+        "--no-browser",
+        "--ip=127.0.0.1",
+        f"--port={port}",
+        f"--IdentityProvider.token={token}",
+        f"--ServerApp.root_dir={root}",
+        "--LabApp.news_url=",
+        *(["--allow-root"] if os.geteuid() == 0 else []),
+    ]
+    with open(root / "lab.log", "wb") as log:
+        server = subprocess.Popen(command, cwd=root, env=env, stdout=log, stderr=log)
+        try:
+            deadline = time.monotonic() + 90
+            while True:
+                try:
+                    urllib.request.urlopen(f"http://127.0.0.1:{port}/api/status?token={token}")
+                    break
+                except OSError:
+                    if time.monotonic() > deadline or server.poll() is not None:
+                        raise RuntimeError((root / "lab.log").read_text()[-2000:]) from None
+                    time.sleep(0.3)
+            yield (
+                f"http://127.0.0.1:{port}/lab/workspaces/shots/tree/panel.ipynb?reset&token={token}"
+            )
+        finally:
+            server.terminate()  # the server shuts its kernels down on the way out
+            try:
+                server.wait(timeout=30)
+            except subprocess.TimeoutExpired:
+                server.kill()
+                server.wait()
+
+
+def save(page: Any, name: str) -> Path:
+    """The visible page as docs/img/``name``.png, in 256 colours."""
+    from PIL import Image
+
+    image = Image.open(BytesIO(page.screenshot())).convert("RGB")
+    small = image.quantize(colors=256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
+    path = OUT / f"{name}.png"
+    small.save(path, optimize=True)
+    size = path.stat().st_size
+    print(f"{path.relative_to(ROOT)}: {size / 1000:.0f} kB")
+    if size > MAX_BYTES:
+        raise RuntimeError(f"{path.name} is {size} bytes, more than {MAX_BYTES}")
+    return path
+
+
+def scroll_to(page: Any, selector: str, margin: float = 8.0) -> None:
+    """Scroll the notebook so that ``selector``'s top is ``margin`` below the scroller's."""
+    found = rects(page, selector)
+    element, scroller = found["element"], found["scroller"]
+    assert element is not None and scroller is not None, selector
+    page.evaluate(SCROLL_JS, element[1] - scroller[1] - margin)
+    page.wait_for_timeout(400)
+
+
+def scroll_until_bottom(page: Any, selector: str, index: int = 0, margin: float = 12.0) -> None:
+    """Scroll so that the ``index``-th ``selector``'s bottom is ``margin`` above the
+    scroller's bottom."""
+    found = rects(page, selector, index)
+    element, scroller = found["element"], found["scroller"]
+    assert element is not None and scroller is not None, selector
+    page.evaluate(SCROLL_JS, element[3] - scroller[3] + margin)
+    page.wait_for_timeout(400)
+
+
+def shots(page: Any) -> list[tuple[str, Callable[[], None]]]:
+    """``(name, what to do before it)`` for every screenshot, in order."""
+
+    def plot_all_points() -> None:
+        page.locator(".robotconf-results-point select").select_option("all points")
+        page.locator(".robotconf-results-overlay input").check()
+        page.wait_for_timeout(1500)
+        wait_for_plot(page)
+        scroll_to(page, ".robotconf-results-point", margin=4)
+
+    def statistics_ee() -> None:
+        page.locator(".robotconf-results-point select").select_option("EE")
+        choose_tab(page, "statistics")
+        scroll_to(page, ".robotconf-results-point", margin=4)
+
+    def plot_ee() -> None:
+        choose_tab(page, "plot")
+        wait_for_plot(page)
+        scroll_to(page, ".robotconf-results-point", margin=4)
+
+    return [
+        ("panel_overview", lambda: None),
+        ("panel_sticky_view", lambda: scroll_until_bottom(page, ".robotconf-module-q", 2)),
+        ("panel_dva_table", lambda: scroll_to(page, ".robotconf-results-point", margin=4)),
+        ("panel_dva_plot", plot_ee),
+        ("panel_all_points", plot_all_points),
+        ("panel_statistics", statistics_ee),
+        (
+            "panel_matrices",
+            lambda: (
+                choose_tab(page, "Matrices"),
+                scroll_to(page, ".robotconf-panel > .jupyter-widget-TabPanel"),
+            ),
+        ),
+    ]
+
+
+def main() -> None:
+    from playwright.sync_api import sync_playwright
+
+    OUT.mkdir(parents=True, exist_ok=True)
+    with tempfile.TemporaryDirectory(prefix="robotconf-shots-") as folder:
+        root = Path(folder)
+        write_notebook(root / "panel.ipynb", [PANEL_CELL])
+        with jupyter_lab(root) as url, sync_playwright() as playwright:
+            browser = playwright.chromium.launch(
+                executable_path=CHROMIUM,
+                args=["--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader"],
+            )
+            try:
+                page = browser.new_page(viewport=VIEWPORT)
+                open_notebook(page, url)
+                dismiss_news(page)
+                show_panel(page)
+                choose_length_unit(page, "mm")
+                steps = shots(page)
+                for name, before in steps[:2]:
+                    before()
+                    save(page, name)
+                page.evaluate(SCROLL_JS, -10_000)
+                run_paper_workflow(page, "mm")
+                for name, before in steps[2:]:
+                    before()
+                    save(page, name)
+                # A wide screen: the editor and the view side by side.
+                page.set_viewport_size(WIDE)
+                choose_tab(page, "Motion")
+                page.evaluate(SCROLL_JS, -10_000)
+                scroll_to(page, ".robotconf-panel", margin=0)
+                save(page, "panel_wide")
+            finally:
+                browser.close()
+
+
+if __name__ == "__main__":
+    main()
