@@ -118,3 +118,15 @@ def test_compare_needs_the_same_robot_and_time_grid() -> None:
     other = simulate(paper_robot(), {}, t_end=1.0, dt=0.05)
     with pytest.raises(ValueError, match="compare: another robot or time grid"):
         plot_motion(motion, compare=other)
+
+
+def test_backward_plot_says_it_is_simulinks_spike() -> None:
+    motion = simulate(
+        paper_robot(), {"q3": RepeatingSequence()}, t_end=5.0, dt=1e-2, method="backward"
+    )
+    note = kink_note(motion)
+    assert note is not None and "Δv/dt" in note and "Simulink's Derivative block" in note
+    numeric = simulate(
+        paper_robot(), {"q3": RepeatingSequence()}, t_end=5.0, dt=1e-2, method="numeric"
+    )
+    assert "half as tall" in (kink_note(numeric) or "")

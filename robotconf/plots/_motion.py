@@ -42,17 +42,25 @@ def kink_note(motion: Motion) -> str | None:
         + " s"
         for name, times in kinks.items()
     )
-    if motion.method == "numeric":
+    if motion.method != "analytic":
+        # Backward differences put the whole jump on one sample, central ones spread it
+        # over two: the backward spike is twice as tall, as in Simulink's Derivative block.
+        spread = (
+            "on one sample, as Simulink's Derivative block shows it"
+            if motion.method == "backward"
+            else "over two samples, half as tall as Simulink's backward differences"
+        )
         return (
             f"Kinks or jumps of the input ({where}): at a kink the velocity jumps by Δv, so "
             "the exact acceleration is an impulse and finite differences show a real spike "
-            "≈ Δv/dt; where the value itself jumps (a sawtooth's drop) the velocity spikes "
-            "too. Spikes grow as dt shrinks; method='analytic' gives the one-sided values."
+            f"≈ Δv/dt ({spread}); where the value itself jumps (a sawtooth's drop) the "
+            "velocity spikes too. Spikes grow as dt shrinks; method='analytic' gives the "
+            "one-sided values."
         )
     return (
         f"Kinks or jumps of the input ({where}): there the exact acceleration is an impulse; "
         "the analytic curves show one-sided (right-hand) values and leave the impulses out. "
-        "method='numeric' shows them as spikes."
+        "method='backward' (Simulink's Derivative block) or 'numeric' shows them as spikes."
     )
 
 
