@@ -112,7 +112,7 @@ def test_custom_symbols():
         ("sin(q1, q2)", "sin takes exactly one argument"),
         ("sin(x=q1)", "character '=' is not allowed"),
         ("sin", "sin needs an argument"),
-        ("q1^2", r"\^ is not a power in Python; write \*\*"),
+        ("q1^2", r"use \*\* for powers: q1\*\*2"),
         ("q1 // 2", r"only \+ - \* / \*\* are allowed"),
         ("q1 % 2", "character '%' is not allowed"),
         ("~q1", "character '~' is not allowed"),
@@ -127,7 +127,7 @@ def test_custom_symbols():
         ("(q1**9)**9", "exponent larger than 64 after combining"),
         ("(10**40)**64", "number too large"),
         ("1" * 100, "more than 40 digits"),
-        ("q1 +", "not a valid formula"),
+        ("q1 +", r"something is missing after \+"),
         ("", "empty input"),
         ("   ", "empty input"),
         ("q1; q2", "character ';' is not allowed"),
@@ -202,7 +202,9 @@ def test_huge_or_deep_input_is_rejected_fast(text):
     start = time.perf_counter()
     with pytest.raises(ValueError, match="too long|nested deeper|too deeply nested|too large"):
         parse_matrix(text)
-    assert time.perf_counter() - start < 1.0
+    # A guard against a hang or a quadratic pass, not a speed test: refusing takes about
+    # 0.2 s here (benchmarks/bench_checker.py measures it), a busy CI machine several times that.
+    assert time.perf_counter() - start < 10.0
 
 
 @pytest.mark.parametrize(

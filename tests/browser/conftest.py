@@ -141,7 +141,10 @@ def lab(tmp_path_factory: pytest.TempPathFactory, spawned: list[psutil.Process])
         log.close()
 
 
-@pytest.fixture(scope="session")
+# Package scope: Playwright's sync API keeps an asyncio loop running in this thread while
+# it is open, which the tests after the browser folder (asyncio.run, a panel's save timer
+# looking for the kernel's loop) must not see.
+@pytest.fixture(scope="package")
 def browser(spawned: list[psutil.Process]) -> Iterator[object]:
     from playwright.sync_api import sync_playwright
 

@@ -104,6 +104,8 @@ def test_lab_lists_the_classroom_and_opens_the_configurator(offline, served: str
     page.goto(f"{served}lab/index.html?path=notebooks/configurator.ipynb")
     first = page.locator(".jp-NotebookPanel .jp-Cell").first
     first.wait_for(timeout=90_000)
+    # A loaded machine shows the cell before its editor fills in: wait for the text.
+    first.get_by_text("piplite.install", exact=False).first.wait_for(timeout=60_000)
     assert 'piplite.install("robotconf")' in first.inner_text()
     page.get_by_text("Python (Pyodide)").first.wait_for(timeout=30_000)
     page.wait_for_timeout(2000)  # let the kernel ask for Pyodide
