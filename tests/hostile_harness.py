@@ -65,6 +65,12 @@ class Case:
         return f"{self.entry}: {self.name}"
 
 
+def _one_line(message: str) -> bool:
+    """One line of text, or a typing slip's line with a caret line under it."""
+    lines = message.strip().split("\n")
+    return len(lines) == 1 or (len(lines) == 2 and lines[1].strip() == "^")
+
+
 def _outcome(case: Case) -> tuple[str, str, str, bool]:
     """``(kind, type name, text, ok)`` for one run in this process."""
     if case.setup is not None:
@@ -78,7 +84,7 @@ def _outcome(case: Case) -> tuple[str, str, str, bool]:
             isinstance(expect, (Refused, Judged))
             and expect.field in err.field
             and message in str(err)
-            and "\n" not in str(err).strip()
+            and _one_line(str(err))
         )
         return "refused", type(err).__name__, f"[{err.field}] {err}", ok
     except BaseException as err:  # noqa: BLE001 - every other exception is a finding

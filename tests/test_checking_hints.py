@@ -49,7 +49,7 @@ def test_wrong_non_square_answer_gets_hints(jacobian_6x3):
     assert result.hints[0].startswith("Columns 2 and 3 are swapped")
     student = jacobian_6x3.copy()
     student[2, 0] += 5.0
-    result = check_matrix(student, jacobian_6x3)
+    result = check_matrix(student, jacobian_6x3, reveal=True)
     assert result.wrong_entries == [(2, 0)]
     assert result.hints[0].startswith("entry (3,1): expected")
 
@@ -110,7 +110,7 @@ def test_transposed_general_4x4_is_not_a_homogeneous_transform():
 
 def test_sine_sign_error_outside_a_rotation_is_a_plain_sign_error(symbolic_jacobian):
     determinant = sympy.Matrix([[2 * sympy.sin(q2)]])
-    result = check_matrix("[[-2*sin(q2)]]", determinant)
+    result = check_matrix("[[-2*sin(q2)]]", determinant, reveal=True)
     assert result.mistakes == ["sign_error"]
     assert result.hints == [
         "entry (1,1): expected 2*sin(q2), you wrote -2*sin(q2) — a sign error: the whole "
@@ -210,7 +210,7 @@ def test_scalar_number_answers(student):
 
 
 def test_wrong_scalar_answer_gets_a_hint():
-    result = check_matrix("2*cos(q2)", 2 * sympy.sin(q2))
+    result = check_matrix("2*cos(q2)", 2 * sympy.sin(q2), reveal=True)
     assert result.hints == ["entry (1,1): expected 2*sin(q2), you wrote 2*cos(q2)."]
     with pytest.raises(InvalidInputError, match="unknown name 'x'"):
         check_matrix("2*x", 2 * sympy.sin(q2))

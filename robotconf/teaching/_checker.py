@@ -32,6 +32,7 @@ from ._numeric_judge import (
     check_size,
     judge,
 )
+from ._slips import short_traceback, slip_in_entry
 from ._student_parser import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -51,7 +52,10 @@ def _student_entry(value: Any, table: dict[str, Any], limits: ParserLimits, wher
     from ._symbolic import exact_number
 
     if isinstance(value, str):
-        return parse_expression(value, table.values(), limits)
+        try:
+            return parse_expression(value, table.values(), limits)
+        except InvalidInputError as error:  # name the entry, as for a number there
+            raise slip_in_entry(error, where) from None
     if isinstance(value, (bool, np.bool_)):
         raise InvalidInputError(where, value, "a number or a formula", problem="a boolean:")
     if isinstance(value, sympy.Basic):
@@ -238,7 +242,7 @@ def check_matrix(
     samples: int = 8,
     seed: int = 0,
     symbols: Iterable[Any] | None = None,
-    reveal: bool = True,
+    reveal: bool = False,
     limits: ParserLimits | None = None,
 ) -> MatrixCheck:
     """Check a student's matrix against the expected one and explain the mistakes.
@@ -266,7 +270,9 @@ def check_matrix(
     symbols : iterable of str or sympy.Symbol, optional
         Extra names the student may use.
     reveal : bool
-        Whether hints may quote the expected entries.
+        Whether hints may quote the expected entries ("expected X, you wrote Y"). By
+        default they do not: they name the wrong entries and the diagnosed mistake, so a
+        student still has something to work out; a solution notebook may reveal.
     limits : ParserLimits, optional
         Caps for parsing text.
 
@@ -280,7 +286,11 @@ def check_matrix(
     ------
     InvalidInputError
         For malformed student input (ragged rows, text outside the whitelist, NaN) or a
-        bad ``tol``/``samples``; naming the entry (field ``"student[r][c]"``, 0-based) for
+        bad ``tol``/``samples``. A typing slip (``cos q2``, ``2 q1``, ``q1^2``, an
+        unclosed bracket) gets one line of advice and a caret under the spot, with
+        field ``"student"`` or, for one text entry of a list, ``"student[r][c]"``;
+        IPython shows the message without the checker's internal frames.
+        Also naming the entry (field ``"student[r][c]"``, 0-based) for
         an entry that is not real (``I``, ``sqrt(-1)``, ``(-8)**(1/3)``, ``sqrt(q1)`` at a
         negative sample of ``q1``: entries must be real), holds a number over about 1233
         digits or an infinity, uses a function the checker cannot evaluate (``factorial``,
@@ -329,7 +339,31 @@ def check_matrix(
     True
     >>> check_matrix(None, np.eye(2)).hints
     ['No answer yet: replace None with your matrix.']
+    >>> check_matrix("cos q2", 0.5)
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: student: `cos q2`: write cos(q2)
+                  ^
     """
+    __tracebackhide__ = True  # noqa: F841 (read by IPython and pytest)
+    try:
+        return _check(student, expected, tol, samples, seed, symbols, reveal, limits)
+    except InvalidInputError as error:
+        # The frames below this call say nothing to a student: the message does.
+        raise short_traceback(error) from None
+
+
+def _check(
+    student: Any,
+    expected: Any,
+    tol: float,
+    samples: int,
+    seed: int,
+    symbols: Iterable[Any] | None,
+    reveal: bool,
+    limits: ParserLimits | None,
+) -> MatrixCheck:
+    """:func:`check_matrix` itself (its errors still carrying their internal frames)."""
     tol = check_finite_number(tol, "tol")
     if not 0 <= tol < 1:
         raise InvalidInputError("tol", tol, "a number from 0 to 1 (relative tolerance)")
@@ -409,7 +443,7 @@ def assert_matrix(student: Any, expected: Any, **options: Any) -> MatrixCheck:
     ------
     AssertionError
         When it is wrong or missing (``None``); the message lists the wrong entries and
-        the hints.
+        the hints, quoting expected entries only with ``reveal=True``.
 
     Examples
     --------
@@ -420,7 +454,9 @@ def assert_matrix(student: Any, expected: Any, **options: Any) -> MatrixCheck:
     - Rows 1 and 2 are swapped: check which coordinate (x, y, z) each row stands for.
     - Wrong entries: (1,1), (1,2), (2,1), (2,2).
     """
+    __tracebackhide__ = True  # noqa: F841 (read by IPython and pytest)
     result = check_matrix(student, expected, **options)
     if not result.ok:
-        raise AssertionError(str(result))
+        # What a student reads in an autograder cell: the hints, not the checker's frames.
+        raise short_traceback(AssertionError(str(result)))
     return result

@@ -12,7 +12,7 @@ from typing import Any
 
 import numpy as np
 
-from ._check_result import show_entry
+from ._check_result import show_entry, show_expected
 from ._mistakes import Candidate, is_rotation_like
 
 __all__ = ["close", "entries_text", "entry_hints", "explain", "shape_hint", "NO_ANSWER"]
@@ -133,7 +133,7 @@ def explain(
 
 def _quote(entries: set, student: Any, expected: Any, reveal: bool) -> list[str]:
     return [
-        f"entry {_entry_text(r, c)}: expected {show_entry(expected[r, c])}, you wrote "
+        f"entry {_entry_text(r, c)}: expected {show_expected(expected[r, c])}, you wrote "
         f"{show_entry(student[r, c])}"
         if reveal
         else f"entry {_entry_text(r, c)}"
@@ -214,7 +214,7 @@ def entry_hints(
     for r, c in sorted(rest - missing)[:8]:
         if reveal:
             hints.append(
-                f"entry {_entry_text(r, c)}: expected {show_entry(expected[r, c])}, "
+                f"entry {_entry_text(r, c)}: expected {show_expected(expected[r, c])}, "
                 f"you wrote {show_entry(student[r, c])}."
             )
         else:

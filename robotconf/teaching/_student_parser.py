@@ -32,6 +32,7 @@ from typing import TYPE_CHECKING, Any
 
 from .._errors import InvalidInputError
 from .._validation import check_integer
+from ._slips import find_slip, power_slip, short_traceback, slip_error
 
 if TYPE_CHECKING:  # pragma: no cover
     import sympy
@@ -168,6 +169,10 @@ class _Builder:
         ]
 
     def fail(self, node: ast.AST | None, problem: str) -> InvalidInputError:
+        if isinstance(node, ast.Subscript) and isinstance(node.value, (ast.List, ast.Tuple)):
+            slip = find_slip(self.text)  # "[1, 2] [3, 4]": a comma missing between rows
+            if slip is not None:
+                return slip_error("student", self.text, *slip, self.allowed)
         return InvalidInputError("student", _quote(self.text, node), self.allowed, problem=problem)
 
     # -- matrices -------------------------------------------------------------------
@@ -430,14 +435,23 @@ def _check_text(text: Any, limits: ParserLimits, allowed: str) -> str:
 
 
 def _syntax_tree(text: str, limits: ParserLimits, allowed: str) -> ast.AST:
+    __tracebackhide__ = True  # noqa: F841 (read by IPython and pytest)
+    stripped = text.strip()
+    if "^" in stripped:  # Python would read it as xor: it is never what a student means
+        position = stripped.index("^")
+        raise slip_error("student", stripped, position, power_slip(stripped, position), allowed)
     try:
-        tree = ast.parse(text.strip(), mode="eval")
+        tree = ast.parse(stripped, mode="eval")
     except SyntaxError as error:
-        offset = max((error.offset or 1) - 1, 0)
-        around = text.strip()[max(0, offset - 15) : offset + 15]
-        raise InvalidInputError(
-            "student", around, allowed, problem=f"not a valid formula ({error.msg}) near"
-        ) from None
+        # Python's own wording talks about Python ("Perhaps you forgot a comma?").
+        slip = find_slip(stripped)
+        if slip is None:
+            lines = stripped.split("\n")
+            row = min(max((error.lineno or 1) - 1, 0), len(lines) - 1)
+            column = min(max((error.offset or 1) - 1, 0), len(lines[row]))
+            position = sum(len(line) + 1 for line in lines[:row]) + column
+            slip = (min(position, max(len(stripped) - 1, 0)), "cannot read the formula here")
+        raise slip_error("student", stripped, *slip, allowed) from None
     except (ValueError, RecursionError, MemoryError, OverflowError):
         raise InvalidInputError(
             "student", text[:40], allowed, problem="formula too deeply nested or too large:"
@@ -501,8 +515,12 @@ def parse_expression(
     ...
     robotconf.InvalidInputError: student: character "'" is not allowed, in "__import__('os')"; ...
     """
-    builder, body = _prepare(text, symbols, limits)
-    return builder.expression(body)
+    __tracebackhide__ = True  # noqa: F841 (read by IPython and pytest)
+    try:
+        builder, body = _prepare(text, symbols, limits)
+        return builder.expression(body)
+    except InvalidInputError as error:
+        raise short_traceback(error) from None
 
 
 def parse_matrix(
@@ -539,5 +557,9 @@ def parse_matrix(
     ...
     robotconf.InvalidInputError: student: rows must all have 2 entries; this one has 1: '[3]'; ...
     """
-    builder, body = _prepare(text, symbols, limits)
-    return builder.matrix(body)
+    __tracebackhide__ = True  # noqa: F841 (read by IPython and pytest)
+    try:
+        builder, body = _prepare(text, symbols, limits)
+        return builder.matrix(body)
+    except InvalidInputError as error:
+        raise short_traceback(error) from None
