@@ -104,6 +104,7 @@ def test_app_must_be_a_bool_or_none() -> None:
 
 def test_matrices_and_wizard_summary_are_fixed_width(no_voila: None) -> None:
     panel = make_panel()
+    panel.results.selected_index = 1  # the Matrices tab draws when it is shown
     assert f'<pre style="{MONOSPACE_STYLE}">' in panel.matrices.numeric_text.value
     assert "robotconf-matrices" in panel.matrices.numeric_text._dom_classes
     # The printout itself is unchanged: the core's text, escaped.

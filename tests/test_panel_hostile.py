@@ -196,6 +196,7 @@ def panel() -> Any:
 
 
 def test_the_hostile_file_loads_and_nothing_in_it_becomes_markup(panel):
+    panel.results.selected_index = 1  # the Matrices tab, drawn when shown
     seen = check_page(panel)
     assert f"loaded {FILE_NAME}" in seen  # the user still sees the file's name, as text
     assert ROBOT_NAME in seen  # in the matrices' text printout

@@ -13,6 +13,8 @@ def test_numeric_printout_is_the_core_derivation():
     panel = make_panel()
     assert panel.matrices.text == str(rc.derivation(panel.robot))
     assert "       [ 70 ]\np_EE = [  0 ]\n       [ 20 ]" in panel.matrices.text
+    assert panel.matrices.numeric_text.value == ""  # drawn only when its tab is shown
+    panel.results.selected_index = 1
     assert "<pre " in panel.matrices.numeric_text.value
     panel.matrices.style.value = "latex"
     latex = rc.derivation(panel.robot).latex()  # shown HTML-escaped: "&" as "&amp;"

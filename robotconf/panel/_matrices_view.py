@@ -129,8 +129,9 @@ class MatricesView:
             ]
         )
         self.visible = True
-        self.derivation: Derivation | None = None
+        self._derivation: Derivation | None = None
         self._robot: Robot | None = None
+        self._numeric_shown: tuple[Robot, str] | None = None
         self._symbolic_cache: dict[Any, Derivation] = {}
         self._symbolic_shown: Any = None
         observe(self.style, self.error, lambda _: self._render_numeric())
@@ -138,33 +139,49 @@ class MatricesView:
         observe(self.lengths, self.error, lambda _: self._render_symbolic())
 
     @property
+    def derivation(self) -> Derivation | None:
+        """The numeric derivation of the robot shown, computed when first asked for."""
+        if self._derivation is None and self._robot is not None:
+            self._derivation = derivation(self._robot, precision=self.precision)
+        return self._derivation
+
+    @property
     def text(self) -> str:
         """The numeric printout as plain text (what the text view shows)."""
         return "" if self.derivation is None else str(self.derivation)
 
     def show(self, robot: Robot) -> None:
-        """Show the derivation of ``robot`` at its own q."""
+        """Show the derivation of ``robot`` at its own q (drawn when the tab is showing)."""
         self._robot = robot
+        self._derivation = None
         fits = symbolic_fits(robot)
         self.symbolic.disabled = self.lengths.disabled = not fits
         self.symbolic_note.value = "" if fits else too_long_note(self.app)
-        self.derivation = derivation(robot, precision=self.precision)
-        self._render_numeric()
-        self._render_symbolic()
+        # A hidden tab is drawn when it is opened: while a slider is dragged, every message
+        # the kernel sends delays the next slider value by a round trip.
+        if self.visible:
+            self._render_numeric()
+            self._render_symbolic()
 
     def error_items(self) -> Iterator[tuple[str, ErrorLabel]]:
         """``(key, label)``: ``matrices``."""
         yield "matrices", self.error
 
     def set_visible(self, visible: bool) -> None:
-        """Tell the view whether its tab is showing (the symbolic view waits until it is)."""
+        """Tell the view whether its tab is showing (it draws only while it is)."""
         self.visible = visible
+        if visible:
+            self._render_numeric()
         self._render_symbolic()
 
     def _render_numeric(self) -> None:
-        if self.derivation is None:
+        if self.derivation is None or self._robot is None:
             return
         latex = self.style.value == "latex"
+        shown = (self._robot, self.style.value)
+        if shown == self._numeric_shown:
+            return
+        self._numeric_shown = shown
         if latex:
             self.numeric_math.value = math_html(self.derivation.latex())
         else:
