@@ -218,6 +218,10 @@ function rcApply(viewer, ops, buffers) {
 // `onFrame(viewer)` runs after each animation step (the widget reports playback time).
 function rcCreateViewer(MeshCat, element, height, onFrame) {
   const viewer = new MeshCat.Viewer(element, false);
+  // Soft shadow maps re-render the scene once per shadow-casting light on every frame;
+  // on a laptop without a GPU (software WebGL) that halves the frame rate of a drag,
+  // and a kinematics picture needs no shadows.
+  viewer.renderer.shadowMap.enabled = false;
   let disposed = false;
   const sizeOf = () => [Math.max(element.clientWidth, 100), height || element.clientHeight || 400];
   const setSize = viewer.set_3d_pane_size.bind(viewer);
