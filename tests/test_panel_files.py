@@ -113,6 +113,7 @@ def test_configurator_function_displays_and_returns_the_panel(capsys):
     assert "Configurator" in capsys.readouterr().out  # plain-text display outside Jupyter
     bundle = panel._repr_mimebundle_()
     assert "application/vnd.jupyter.widget-view+json" in bundle
+    assert bundle["text/plain"] == repr(panel)  # also where an IPython shell formats it
 
 
 def test_default_scene_is_the_real_scene_or_a_clear_placeholder():

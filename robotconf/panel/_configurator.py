@@ -340,7 +340,12 @@ class Configurator:
             self.motion_section.load(signals, simulation)
 
     def _repr_mimebundle_(self, **kwargs: Any) -> Any:
-        return self.widget._repr_mimebundle_(**kwargs)
+        bundle = self.widget._repr_mimebundle_(**kwargs)
+        if isinstance(bundle, dict):
+            # A front end without widgets (a console, nbconvert's text) shows the panel's
+            # own summary, not the repr of its outermost box.
+            bundle = {**bundle, "text/plain": repr(self)}
+        return bundle
 
     def __repr__(self) -> str:
         return f"<Configurator: {self._robot.n} modules, {end_effector_text(self._robot)}>"

@@ -112,7 +112,11 @@ class NumberControl:
         )
         self.box = widgets.FloatText(value=shown, step=step, layout=widgets.Layout(width="78px"))
         self.widen_button = widgets.Button(
-            icon="arrows-h", tooltip="double the slider range", layout=widgets.Layout(width="30px")
+            icon="arrows-h",
+            tooltip="double the slider range",
+            # Without padding the icon fits; with a button's default padding a 30-px button
+            # shows it cut, followed by an ellipsis.
+            layout=widgets.Layout(width="32px", padding="0"),
         )
         self.unit_label = widgets.Label(self._unit_text(), layout=widgets.Layout(width="40px"))
         self.error = ErrorLabel()
