@@ -58,11 +58,27 @@ def pixels(locator) -> np.ndarray:  # type: ignore[no-untyped-def]
     return np.asarray(Image.open(BytesIO(locator.screenshot())).convert("RGB")).astype(int)
 
 
-def red_centroid(image: np.ndarray) -> tuple[int, np.ndarray]:
-    """Number of end-effector-red pixels and their centroid (x, y)."""
+#: Solid red pixels (see :func:`solid_red`) that show the end-effector's sphere: a sphere
+#: drawn about 7 px across or more; a frame's one-pixel red axis has none.
+SOLID_RED_PIXELS = 20
+
+
+def solid_red(image: np.ndarray) -> np.ndarray:
+    """Red pixels whose 5×5 neighbourhood is all red, shape (H, W) of bool: the
+    end-effector's sphere, not the one-pixel red x axis of a frame (which alone would pass
+    a pixel count with no end-effector in view)."""
     r, g, b = image[..., 0], image[..., 1], image[..., 2]
-    mask = (r > 140) & (g < 90) & (b < 90)
-    ys, xs = np.nonzero(mask)
+    red = (r > 140) & (g < 90) & (b < 90)
+    core = red.copy()
+    for dy in range(-2, 3):
+        for dx in range(-2, 3):
+            core &= np.roll(red, (dy, dx), axis=(0, 1))
+    return core
+
+
+def red_centroid(image: np.ndarray) -> tuple[int, np.ndarray]:
+    """Number of the end-effector's solid red pixels and their centroid (x, y)."""
+    ys, xs = np.nonzero(solid_red(image))
     if len(xs) == 0:
         return 0, np.array([np.nan, np.nan])
     return len(xs), np.array([xs.mean(), ys.mean()])
@@ -75,7 +91,7 @@ def red_moved(page, canvas, start: np.ndarray, *, at_least: float = 5.0, timeout
     """
     count, centroid = red_centroid(pixels(canvas))
     for _ in range(int(timeout / 0.25)):
-        if count > 40 and np.linalg.norm(centroid - start) > at_least:
+        if count >= SOLID_RED_PIXELS and np.linalg.norm(centroid - start) > at_least:
             break
         page.wait_for_timeout(250)
         count, centroid = red_centroid(pixels(canvas))

@@ -24,7 +24,7 @@ import psutil
 import pytest
 
 from .conftest import _free_port
-from .lab_driver import pixels, red_centroid, red_moved
+from .lab_driver import SOLID_RED_PIXELS, pixels, red_centroid, red_moved
 
 APP = Path(__file__).parents[2] / "app"
 #: Short culling for the test (the app's own is minutes): a kernel without a page goes
@@ -173,7 +173,7 @@ def test_student_workflow_in_the_app(voila_app: VoilaApp, page) -> None:  # type
     canvas = page.locator("[data-robotconf-scene] canvas").first
     page.wait_for_timeout(1000)
     count, start = red_centroid(pixels(canvas))
-    assert count > 40, "no red end-effector in the 3D pane"
+    assert count >= SOLID_RED_PIXELS, "no red end-effector in the 3D pane"
     assert "p_EE = (70, 0, 20)" in page.locator(".robotconf-ee").inner_text()
 
     # q1 = 90° typed into module 1's q box (the number box beside its slider).
@@ -186,7 +186,9 @@ def test_student_workflow_in_the_app(voila_app: VoilaApp, page) -> None:  # type
         timeout=10_000,
     )
     count, after = red_moved(page, canvas, start)
-    assert count > 40 and np.linalg.norm(after - start) > 5, "the picture did not follow q1"
+    assert count >= SOLID_RED_PIXELS and np.linalg.norm(after - start) > 5, (
+        f"the picture did not follow q1: {count} red pixels at {after}, from {start}"
+    )
 
     # Run on the Motion tab: the displacement / velocity / acceleration table.
     _tab(page, "Motion").click()

@@ -9,7 +9,7 @@ from pathlib import Path
 import numpy as np
 
 from .conftest import Lab, copy_notebook
-from .lab_driver import open_notebook, pixels, red_centroid, red_moved, run_cell
+from .lab_driver import SOLID_RED_PIXELS, open_notebook, pixels, red_centroid, red_moved, run_cell
 
 NOTEBOOK = Path(__file__).parents[2] / "notebooks" / "configurator.ipynb"
 
@@ -30,7 +30,7 @@ def test_configurator_widgets_drive_the_robot(lab: Lab, page) -> None:  # type: 
     np.testing.assert_allclose(_ee(page), [70, 0, 20])  # the paper's parking position
     page.wait_for_timeout(1200)
     count, start = red_centroid(pixels(canvas))
-    assert count > 40, "no red end-effector in the 3D pane"
+    assert count >= SOLID_RED_PIXELS, "no red end-effector in the 3D pane"
 
     # Move q2 with the keyboard on its slider (module 2's row).
     handle = page.locator(".robotconf-module-q").nth(1).locator(".noUi-handle").first
@@ -42,7 +42,7 @@ def test_configurator_widgets_drive_the_robot(lab: Lab, page) -> None:  # type: 
     assert np.linalg.norm(moved - [70, 0, 20]) > 1, moved
     assert abs(moved[1]) < 1e-9  # Ry keeps the arm in the xz plane
     count, after_slider = red_moved(page, canvas, start)
-    assert count > 40 and np.linalg.norm(after_slider - start) > 5
+    assert count >= SOLID_RED_PIXELS and np.linalg.norm(after_slider - start) > 5
 
     # Module 2 becomes a rotation about x: the 30 + 40 arm lies along x, so turning it
     # about x leaves the EE at the parking position while the frames in the picture turn.
@@ -50,7 +50,7 @@ def test_configurator_widgets_drive_the_robot(lab: Lab, page) -> None:  # type: 
     page.wait_for_timeout(500)
     np.testing.assert_allclose(_ee(page), [70, 0, 20], atol=1e-3)
     count, after_type = red_moved(page, canvas, after_slider)
-    assert count > 40 and np.linalg.norm(after_type - after_slider) > 5
+    assert count >= SOLID_RED_PIXELS and np.linalg.norm(after_type - after_slider) > 5
 
     # Module 3 about z instead: now y changes.
     page.locator(".robotconf-module-kind select").nth(2).select_option(label="3 Rz")

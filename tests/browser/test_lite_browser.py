@@ -19,7 +19,7 @@ import numpy as np
 import pytest
 
 from ..test_lite import site_folder
-from .lab_driver import pixels, red_centroid
+from .lab_driver import SOLID_RED_PIXELS, pixels, red_centroid
 
 pytestmark = pytest.mark.timeout(900)  # the first test may build the site
 
@@ -126,6 +126,6 @@ def test_scene_page_draws_the_robot_without_a_kernel(offline, served: str) -> No
     page.wait_for_timeout(1500)
     picture = pixels(page.locator("#scene canvas"))
     count, _ = red_centroid(picture)
-    assert count > 40, "the red end-effector sphere is not visible"
+    assert count >= SOLID_RED_PIXELS, "the red end-effector sphere is not visible"
     assert len(np.unique(picture.reshape(-1, 3), axis=0)) > 50  # not a blank canvas
     assert not page.aborted and not page.errors, (page.aborted, page.errors)

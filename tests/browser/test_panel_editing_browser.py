@@ -16,11 +16,10 @@ import os
 import time
 from pathlib import Path
 
-import numpy as np
 from playwright.sync_api import expect
 
 from .conftest import Lab
-from .lab_driver import NOTEBOOK, open_notebook, pixels, run_cell, write_notebook
+from .lab_driver import NOTEBOOK, open_notebook, pixels, run_cell, solid_red, write_notebook
 
 CELLS = [
     "import robotconf as rc\n"
@@ -49,23 +48,11 @@ def _kinds(page) -> list[str]:  # type: ignore[no-untyped-def]
     return [text.replace("\xa0", " ") for text in shown]  # ipywidgets shows spaces as nbsp
 
 
-def _red_blob(image: np.ndarray) -> int:
-    """Red pixels whose 5×5 neighbourhood is all red: the end-effector's sphere, not the
-    one-pixel red x axis at the base (``red_centroid`` counts both)."""
-    r, g, b = image[..., 0], image[..., 1], image[..., 2]
-    red = (r > 140) & (g < 90) & (b < 90)
-    core = red.copy()
-    for dy in range(-2, 3):
-        for dx in range(-2, 3):
-            core &= np.roll(red, (dy, dx), axis=(0, 1))
-    return int(core.sum())
-
-
 def _red_end_effector(page, canvas) -> int:  # type: ignore[no-untyped-def]
     """The end-effector's red pixels in the 3D pane, polled until drawn (or 15 s passed)."""
     count = 0
     for _ in range(60):
-        count = _red_blob(pixels(canvas))
+        count = int(solid_red(pixels(canvas)).sum())
         if count > 10:
             break
         page.wait_for_timeout(250)

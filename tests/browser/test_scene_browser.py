@@ -6,6 +6,7 @@ import numpy as np
 
 from .conftest import Lab
 from .lab_driver import (
+    SOLID_RED_PIXELS,
     open_notebook,
     pixels,
     red_centroid,
@@ -34,14 +35,14 @@ def test_scene_renders_moves_and_exports(lab: Lab, page) -> None:  # type: ignor
     page.wait_for_timeout(1500)
     before = pixels(canvas)
     count, start = red_centroid(before)
-    assert count > 40, "the red end-effector sphere is not visible"
+    assert count >= SOLID_RED_PIXELS, "the red end-effector sphere is not visible"
     # Not a blank canvas: many distinct colours (background gradient, links, spheres).
     assert len(np.unique(before.reshape(-1, 3), axis=0)) > 50
 
     run_cell(page, 1)
     wait_idle(page)
     count_after, end = red_moved(page, canvas, start, at_least=15)
-    assert count_after > 40
+    assert count_after >= SOLID_RED_PIXELS
     assert np.linalg.norm(end - start) > 15, "scene.update did not move the end-effector"
 
     run_cell(page, 2)
@@ -63,5 +64,5 @@ def test_scene_renders_moves_and_exports(lab: Lab, page) -> None:  # type: ignor
     offline.wait_for_selector("body[data-robotconf-scene='ready']", timeout=30_000)
     offline.wait_for_timeout(1500)
     count_html, _ = red_centroid(pixels(offline.locator("#scene canvas")))
-    assert count_html > 40
+    assert count_html >= SOLID_RED_PIXELS
     assert not page.errors, page.errors

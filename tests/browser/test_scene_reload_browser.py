@@ -13,6 +13,7 @@ import numpy as np
 from .conftest import Lab
 from .lab_driver import (
     NOTEBOOK,
+    SOLID_RED_PIXELS,
     open_notebook,
     pixels,
     red_centroid,
@@ -40,7 +41,7 @@ def _centroids(page) -> list[np.ndarray]:  # type: ignore[no-untyped-def]
     out = []
     for k in range(3):
         count, centroid = red_centroid(pixels(canvases.nth(k)))
-        assert count > 40, f"no red end-effector in pane {k}"
+        assert count >= SOLID_RED_PIXELS, f"no red end-effector in pane {k}"
         out.append(centroid)
     return out
 
