@@ -156,3 +156,26 @@ def test_ipython_shows_the_message_only():
     first = next(line for line in lines if "write cos(q2)" in line)
     caret = lines[lines.index(first) + 1]
     assert first[caret.index("^")] == "q"
+
+
+@pytest.mark.parametrize(
+    "pasted",
+    [
+        lambda robot: rc.expected_matrix(robot, "A1"),
+        lambda robot: rc.derivation(robot),
+        lambda robot: rc.derivation(robot).steps[0],
+        lambda robot: "rc.derivation(robot).matrices[0]",
+        lambda robot: 'expected_matrix(robot, "A1")',
+        lambda robot: "robot.frame_poses()[0]",
+    ],
+)
+def test_a_library_call_pasted_as_the_answer_is_refused_kindly(pasted) -> None:
+    robot = rc.preset("paper")
+    expected = rc.expected_matrix(robot, "A1")
+    with pytest.raises(rc.InvalidInputError, match="robotconf") as error:
+        rc.check_matrix(pasted(robot), expected)
+    assert error.value.field == "student"
+    assert "the matrix you derived" in str(error.value)
+    # The same matrix written out is graded as usual.
+    written = "[[cos(q1), -sin(q1), 0, 0], [sin(q1), cos(q1), 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]"
+    assert rc.check_matrix(written, expected).ok

@@ -11,6 +11,7 @@ and looking for the one the student's answer matches, numerically too.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterable
 from typing import TYPE_CHECKING, Any
 
@@ -71,6 +72,32 @@ def _student_entry(value: Any, table: dict[str, Any], limits: ParserLimits, wher
     raise InvalidInputError(where, value, "a number or a formula", problem="not a number:")
 
 
+#: Text that calls robotconf instead of stating a matrix: ``rc.derivation(robot)``,
+#: ``expected_matrix(…)``, ``robot.frame_poses()``.
+_LIBRARY_CALL = re.compile(
+    r"\b(?:rc|robotconf|robot|panel)\s*\.|\b(?:derivation|expected_matrix)\s*\("
+)
+_OWN_WORK = "the matrix you derived, written out: [[…], …] with numbers, q1, q2, …, sin, cos"
+
+
+def _refuse_library_answer(student: Any) -> None:
+    """A robotconf result or call handed in as the answer checks nothing: say so kindly."""
+    if type(student).__module__.startswith("robotconf."):
+        raise InvalidInputError(
+            "student",
+            type(student).__name__,
+            _OWN_WORK,
+            problem="this is robotconf's own result, not your answer:",
+        )
+    if isinstance(student, str) and _LIBRARY_CALL.search(student[:2000]):
+        raise InvalidInputError(
+            "student",
+            student,
+            _OWN_WORK,
+            problem="this asks robotconf for the answer instead of giving yours:",
+        )
+
+
 def _parse_text(text: str, table: dict[str, Any], limits: ParserLimits, scalar: bool) -> Any:
     """Parse a typed answer; for a 1×1 answer a bare formula such as ``2*sin(q2)`` is fine."""
     import sympy
@@ -96,6 +123,7 @@ def _student_matrix(
 
     if isinstance(student, np.ndarray) and student.ndim == 0:
         student = student.item()
+    _refuse_library_answer(student)
     if isinstance(student, str):
         matrix = _parse_text(student, table, limits, scalar)
     elif isinstance(student, sympy.MatrixBase):
