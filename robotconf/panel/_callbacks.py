@@ -35,7 +35,7 @@ import ipywidgets as widgets
 from .._errors import InvalidInputError
 from ._errors_display import ErrorLabel
 
-__all__ = ["Guarded", "guarded", "observe", "on_click", "failure_message", "LOGGER"]
+__all__ = ["Guarded", "guarded", "observe", "on_click", "on_message", "failure_message", "LOGGER"]
 
 #: Where unexpected errors of the panel are logged, with their traceback.
 LOGGER = logging.getLogger("robotconf.panel")
@@ -232,4 +232,35 @@ def on_click(button: widgets.Button, label: ErrorTarget, callback: Callable[[], 
     """
     handler = guarded(label, lambda _button: callback())
     button.on_click(handler)
+    return handler
+
+
+def on_message(
+    widget: widgets.Widget, label: ErrorTarget, callback: Callable[[dict[str, Any]], Any]
+) -> Guarded:
+    """Call ``callback(content)`` for every custom message a widget's page sends, guarded.
+
+    Parameters
+    ----------
+    widget : ipywidgets.Widget
+        A widget whose front end sends custom messages (an anywidget's ``model.send``).
+    label : ErrorLabel or callable
+        Where a failure is shown (or a function returning it).
+    callback : callable
+        Receives the message content (a dict); buffers are ignored.
+
+    Returns
+    -------
+    Guarded
+
+    Examples
+    --------
+    >>> relay, label = widgets.DOMWidget(), ErrorLabel()
+    >>> _ = on_message(relay, label, lambda content: content["missing"])
+    >>> relay._handle_custom_msg({"other": 1}, [])
+    >>> label.message
+    "internal error: KeyError: 'missing'"
+    """
+    handler = guarded(label, callback)
+    widget.on_msg(lambda _widget, content, _buffers: handler(content))
     return handler

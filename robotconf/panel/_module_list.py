@@ -9,6 +9,7 @@ import ipywidgets as widgets
 
 from .._errors import InvalidInputError
 from ..kinematics import Link, Module, Robot
+from ._drag_relay import DragRelay
 from ._errors_display import ErrorLabel
 from ._module_row import ModuleRow
 from ._row_list import ChangeCallback, RowList
@@ -39,9 +40,19 @@ class ModuleList(RowList):
             description="add module", icon="plus", tooltip="append a module at the tool end"
         )
         super().__init__(on_change, button)
+        # The q sliders' drags reach the kernel without waiting for each round trip.
+        self.drag_relay = DragRelay()
         self.widget = widgets.VBox(
-            [self._rows_box, widgets.HBox([self.add_button, self.error.widget])]
+            [
+                self._rows_box,
+                widgets.HBox([self.add_button, self.error.widget]),
+                self.drag_relay,
+            ]
         )
+
+    def _refresh(self) -> None:
+        super()._refresh()
+        self.drag_relay.track(row.q for row in self.rows)
 
     def _row(self, link: Link, limits: Any = None) -> ModuleRow:
         return ModuleRow(link, self._scale, self.degrees, limits, self._row_changed, self._action)

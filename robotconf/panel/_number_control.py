@@ -244,9 +244,29 @@ class NumberControl:
             self._quiet = quiet
 
     def _slider_changed(self, change: dict[str, Any]) -> None:
-        if self._quiet:
+        self.drag_to(change["new"])
+
+    def drag_to(self, shown: float) -> None:
+        """Take a slider position the user dragged to (display units), as a move of the
+        slider: the box follows and ``on_change`` runs. The page's slider already shows it.
+
+        Used for the slider's own updates and for the drag relay's faster copies of them
+        (:mod:`robotconf.panel._drag_relay`); a position outside the slider's range is a
+        stale copy (the range or unit changed since) and is ignored.
+
+        Examples
+        --------
+        >>> control = NumberControl("q", 0.0, -180, 180, angle=True)
+        >>> control.drag_to(29.999999999999996)  # a browser's notch at 30
+        >>> control.box.value, round(control.core_value, 6)
+        (30.0, 0.523599)
+        >>> control.drag_to(720.0)  # outside the slider: ignored
+        >>> control.box.value
+        30.0
+        """
+        if self._quiet or not self.slider.min <= shown <= self.slider.max:
             return
-        shown = snap_to_step(change["new"], self.step)
+        shown = snap_to_step(shown, self.step)
         if shown == self.value:
             return  # the browser's rounding noise, not a move: nothing changed
         self._quiet = True
