@@ -28,14 +28,14 @@ PACKAGE = Path(__file__).resolve().parents[1] / "robotconf"
 LAYERS: tuple[tuple[str, ...], ...] = (
     ("_base",),
     ("kinematics", "signals"),
-    ("motion",),
+    ("motion", "ik"),
     ("io", "teaching", "presets"),
     ("plots",),
     ("scene",),
-    ("panel", "cli"),
+    ("panel", "cli", "grading"),
     ("__init__", "__main__"),
 )
-PRESENTATION = ("plots", "scene", "panel", "cli")
+PRESENTATION = ("plots", "scene", "panel", "cli", "grading")
 SHARED_BASE = ("robotconf._errors", "robotconf._validation", "robotconf._budget")
 
 #: The only places where the core reaches up a layer: methods that hand over to a richer

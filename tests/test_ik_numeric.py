@@ -1,0 +1,441 @@
+"""The numeric inverse-kinematics solver: solutions, honest reasons, vectorization, inputs.
+
+Reference values are derived by hand in the comments (reach radii, the 2R closed form,
+joint angles) or computed independently here (forward kinematics of the answer, a tiny
+Newton iteration on the 2R formulas written out below).
+"""
+
+from __future__ import annotations
+
+import warnings
+
+import numpy as np
+import pytest
+
+from robotconf import InvalidInputError, set_memory_budget
+from robotconf.ik import IKResult, ik
+from robotconf.ik._reach import reach_shell
+from robotconf.ik._rotation import rotation_matrix, rotation_vector
+from robotconf.kinematics import Module, Robot, characteristic_length
+from robotconf.presets import preset
+
+TOL = 1e-9  # the default relative position tolerance
+ORIENTATION_TOL = 1e-9
+
+
+def random_q(robot: Robot, count: int, seed: int) -> np.ndarray:
+    limits = robot.joint_limits()
+    rng = np.random.default_rng(seed)
+    return limits[:, 0] + (limits[:, 1] - limits[:, 0]) * rng.random((count, robot.n))
+
+
+def turn_angle(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+    """Angle between rotations, from ‖A − B‖_F = 2√2·sin(θ/2) (accurate for tiny θ)."""
+    gap = np.linalg.norm(a - b, axis=(-2, -1))
+    return 2.0 * np.arcsin(np.minimum(gap / (2.0 * np.sqrt(2.0)), 1.0))
+
+
+def check_solutions(robot: Robot, result: IKResult, target: np.ndarray, mode: str) -> None:
+    """Every success's forward kinematics meets the target within the tolerances."""
+    ok = np.asarray(result.success)
+    q = np.asarray(result.q)[ok]
+    size = characteristic_length(robot)
+    if mode == "position":
+        reached = robot.end_effector(q)
+        gap = np.linalg.norm(reached - target[ok], axis=-1)
+    else:
+        pose = robot.end_effector_pose(q)
+        gap = np.linalg.norm(pose[:, :3, 3] - target[ok][:, :3, 3], axis=-1)
+        angle = turn_angle(pose[:, :3, :3], target[ok][:, :3, :3])
+        assert np.all(angle <= ORIENTATION_TOL * 1.01)
+        assert np.allclose(np.asarray(result.orientation_error)[ok], angle, atol=1e-12)
+    assert np.all(gap <= TOL * size)
+    assert np.allclose(np.asarray(result.position_error)[ok], gap, rtol=1e-6, atol=1e-15)
+    limits = robot.joint_limits()
+    moving = np.array([t in ("revolute", "prismatic") for t in robot.joint_types])
+    inside = (q >= limits[:, 0] - 1e-12) & (q <= limits[:, 1] + 1e-12)
+    assert np.all(inside[:, moving])
+
+
+# -- solutions ----------------------------------------------------------------------------
+
+
+@pytest.mark.parametrize(
+    "name", ["planar_2r", "planar_3r", "scara", "puma560", "ur5", "paper", "stanford"]
+)
+@pytest.mark.parametrize("mode", ["position", "pose"])
+def test_random_reachable_targets_are_met(name: str, mode: str) -> None:
+    robot = preset(name)
+    q = random_q(robot, 40, seed=11)
+    target = robot.end_effector(q) if mode == "position" else robot.end_effector_pose(q)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", UserWarning)  # planar arms asked for a pose
+        result = ik(robot, target, mode=mode)
+    check_solutions(robot, result, target, mode)
+    assert np.mean(result.success) >= 0.95
+    assert all(r == "converged" for r, s in zip(result.reason, result.success, strict=True) if s)
+    assert np.all(result.distance_to_reach[result.success] == 0.0)
+
+
+@pytest.mark.parametrize("name", ["puma560", "ur5"])
+def test_pose_success_rate_with_default_seeds(name: str) -> None:
+    # Measured: puma560 200/200 and 995/1000, ur5 200/200 and 999/1000 (other seeds).
+    robot = preset(name)
+    target = robot.end_effector_pose(random_q(robot, 200, seed=5))
+    result = ik(robot, target, mode="pose")
+    assert np.mean(result.success) >= 0.97
+    check_solutions(robot, result, target, "pose")
+
+
+def test_prismatic_robots_and_held_modules() -> None:
+    for name in ("cartesian", "cylindrical", "spherical"):
+        robot = preset(name)
+        target = robot.end_effector(random_q(robot, 20, seed=2))
+        result = ik(robot, target)
+        assert result.success.all()
+        check_solutions(robot, result, target, "position")
+    # A null module and a fixed offset: their coordinates stay the robot's own.
+    paper = preset("paper")
+    modules = [paper.modules[0], Module("none", q=0.7), *paper.modules[1:], Module("fixed")]
+    robot = Robot(modules, end_effector=(40, 0, 0)).with_module(4, Module("fixed", a=(0, 0, 5)))
+    q = np.array([0.4, 0.7, -0.3, 0.8, 0.0])
+    result = ik(robot, robot.end_effector(q), q0=np.zeros(5))
+    assert result.reason == "converged"
+    assert result.q[1] == 0.7 and result.q[4] == 0.0
+    assert np.linalg.norm(robot.end_effector(result.q) - robot.end_effector(q)) <= TOL * 95
+
+
+def test_position_and_tool_axis_mask_with_a_held_joint() -> None:
+    # PUMA 560 whose last joint is held (a "(constant)" module): 5 joints can still put the
+    # point and the tool's z axis anywhere reachable, but not the turn about that axis.
+    puma = preset("puma560")
+    robot = puma.with_module(5, puma.modules[5].with_name("flange (constant)"))
+    q_true = np.array([0.3, 0.6, -0.9, 0.4, 0.7, 0.0])
+    target = robot.end_effector_pose(q_true)
+    target[:3, :3] = target[:3, :3] @ rotation_matrix(np.array([[0.0, 0.0, 0.7]]))[0]
+    result = ik(robot, target, mode="pose", mask=[1, 1, 1, 1, 1, 0], q0=np.zeros(6))
+    assert result.reason == "converged"
+    assert result.q[5] == 0.0
+    pose = robot.end_effector_pose(result.q)
+    z_gap = np.arccos(np.clip(pose[:3, 2] @ target[:3, 2], -1.0, 1.0))
+    assert z_gap <= 1e-7  # arccos is only good to ~1e-8 near 0
+    assert np.linalg.norm(pose[:3, 3] - target[:3, 3]) <= TOL * characteristic_length(robot)
+    # The turn about z is left open: here it stays 0.7 rad off (hand: the held joint 6).
+    assert turn_angle(pose[:3, :3], target[:3, :3]) == pytest.approx(0.7, abs=1e-7)
+    # The full pose asks for 6 directions of 5 joints: a warning, then the least-squares
+    # compromise between the two errors, and "unreachable".
+    with pytest.warns(UserWarning, match="only 5 at a time"):
+        full = ik(robot, target, mode="pose", q0=result.q, seeds=1)
+    assert full.reason == "unreachable"
+    assert 0.0 < full.orientation_error < 0.7 and full.position_error > 1e-3
+
+
+# -- the 2R arm against its closed form and a hand-written Newton ---------------------------
+
+
+def two_r(l1: float = 2.0, l2: float = 1.0) -> Robot:
+    return preset("planar_2r", l1=l1, l2=l2)
+
+
+def closed_form(x: float, y: float, l1: float, l2: float) -> list[np.ndarray]:
+    """Both 2R solutions: cos q2 = (r² − l1² − l2²)/(2 l1 l2), q1 = atan2(y, x) − β."""
+    c2 = (x * x + y * y - l1 * l1 - l2 * l2) / (2 * l1 * l2)
+    out = []
+    for q2 in (np.arccos(c2), -np.arccos(c2)):
+        q1 = np.arctan2(y, x) - np.arctan2(l2 * np.sin(q2), l1 + l2 * np.cos(q2))
+        out.append(np.array([q1, q2]))
+    return out
+
+
+def newton_2r(x: float, y: float, q: np.ndarray, l1: float, l2: float) -> np.ndarray:
+    """Plain Newton on the 2R formulas written out (no robotconf involved)."""
+    q = q.astype(float).copy()
+    for _ in range(50):
+        c1, s1 = np.cos(q[0]), np.sin(q[0])
+        c12, s12 = np.cos(q[0] + q[1]), np.sin(q[0] + q[1])
+        f = np.array([l1 * c1 + l2 * c12 - x, l1 * s1 + l2 * s12 - y])
+        jac = np.array([[-l1 * s1 - l2 * s12, -l2 * s12], [l1 * c1 + l2 * c12, l2 * c12]])
+        q -= np.linalg.solve(jac, f)
+    return q
+
+
+def wrap(angle: np.ndarray) -> np.ndarray:
+    return (angle + np.pi) % (2 * np.pi) - np.pi
+
+
+def test_2r_matches_closed_form_and_newton() -> None:
+    robot = two_r()
+    rng = np.random.default_rng(4)
+    radius = rng.uniform(1.2, 2.8, 20)
+    heading = rng.uniform(-np.pi, np.pi, 20)
+    target = np.stack([radius * np.cos(heading), radius * np.sin(heading), np.zeros(20)], 1)
+    start = np.array([0.3, 1.2])
+    result = ik(robot, target, q0=start)
+    assert result.success.all()
+    for (x, y, _), q in zip(target, result.q, strict=True):
+        gaps = [np.abs(wrap(q - s)).max() for s in closed_form(x, y, 2.0, 1.0)]
+        assert min(gaps) <= 1e-8
+        newton = newton_2r(x, y, q + 0.05, 2.0, 1.0)  # Newton from near the answer
+        assert np.abs(wrap(newton - q)).max() <= 1e-8
+
+
+# -- unreachable, singular, joint limit, iteration limit --------------------------------------
+
+
+def test_paper_arm_beyond_its_reach() -> None:
+    # Reach sphere about the shoulder (0, 0, 20) on joint 1's axis: l2 + l3 = 30 + 40 = 70.
+    robot = preset("paper")
+    direction = np.array([0.6, 0.0, 0.8])
+    target = np.array([0.0, 0.0, 20.0]) + 100 * direction
+    result = ik(robot, target)
+    assert result.reason == "unreachable" and not result.success
+    assert result.distance_to_reach == pytest.approx(100 - 70, abs=1e-12)
+    assert "30 beyond the reach" in result.message and "radius 70" in result.message
+    # The arm ends stretched towards the target: 30 short of it, on the same ray.
+    assert result.position_error == pytest.approx(30.0, abs=1e-6)
+    reached = robot.end_effector(result.q)
+    assert np.allclose(reached, [0.0, 0.0, 20.0] + 70 * direction, atol=1e-5)
+
+
+def test_2r_target_in_the_hole() -> None:
+    # l1 = 2, l2 = 1: no point closer than l1 − l2 = 1 to the base; 0.5 is 0.5 inside.
+    result = ik(two_r(), [0.5, 0.0, 0.0])
+    assert result.reason == "unreachable"
+    assert result.distance_to_reach == pytest.approx(0.5, abs=1e-12)
+    assert "inside the hole" in result.message
+
+
+def test_target_off_the_plane_of_a_planar_arm() -> None:
+    # (2.5, 0, 1) is inside the reach sphere (|p| = 2.69 < 3), but a planar arm stays in
+    # z = 0: the closest point it reaches is (2.5, 0, 0), exactly 1 away.
+    result = ik(two_r(), [2.5, 0.0, 1.0])
+    assert result.reason == "unreachable"
+    assert result.distance_to_reach == pytest.approx(1.0, abs=1e-9)
+    assert np.allclose(two_r().end_effector(result.q), [2.5, 0.0, 0.0], atol=1e-7)
+    assert "misses it by 1 in position" in result.message
+
+
+def test_errors_of_rows_left_out_are_nan() -> None:
+    robot = preset("puma560")
+    target = robot.end_effector_pose([0.1, 0.2, -0.3, 0.4, 0.5, 0.6])
+    turn_only = ik(robot, target, mode="pose", mask=[0, 0, 0, 1, 1, 1])
+    assert turn_only.success and np.isnan(turn_only.position_error)
+    assert turn_only.orientation_error <= ORIENTATION_TOL
+    point_only = ik(robot, target, mode="pose", mask=[True] * 3 + [False] * 3)
+    assert point_only.success and np.isnan(point_only.orientation_error)
+
+
+def test_reach_shell_holds_every_preset() -> None:
+    for name in ("paper", "cartesian", "cylindrical", "scara", "stanford", "puma560", "ur5"):
+        robot = preset(name)
+        moving = np.array([t in ("revolute", "prismatic") for t in robot.joint_types])
+        shell = reach_shell(robot, moving, robot.q)
+        reached = robot.end_effector(random_q(robot, 5000, 1))
+        distance = np.linalg.norm(reached - shell.center, axis=1)
+        assert distance.max() <= shell.outer + 1e-9 and distance.min() >= shell.inner - 1e-9
+    # The 2R shell by hand: 1 ≤ r ≤ 3 about the base.
+    shell = reach_shell(two_r(), np.ones(2, bool), np.zeros(2))
+    assert (shell.inner, shell.outer) == (1.0, 3.0)
+
+
+def test_stretched_2r_is_singular_from_one_start() -> None:
+    # Straight out (q = 0) the EE is at (3, 0, 0); (2.5, 0, 0) is along the arm, and both
+    # Jacobian columns point along y there: no step can move along x.
+    robot = two_r()
+    stuck = ik(robot, [2.5, 0.0, 0.0], q0=[0.0, 0.0], seeds=1)
+    assert stuck.reason == "singular"
+    assert "joints 1 and 2" in stuck.message
+    assert np.array_equal(stuck.q, [0.0, 0.0])
+    assert stuck.distance_to_reach == 0.0
+    # With random restarts the same target is solved.
+    assert ik(robot, [2.5, 0.0, 0.0], q0=[0.0, 0.0]).reason == "converged"
+
+
+def test_puma_wrist_singularity_names_joints_4_and_6() -> None:
+    # q5 = 0: joints 4 and 6 turn about the same line. The target is moved along the
+    # direction the Jacobian cannot produce (its left null vector, in the solver's units),
+    # so the error is orthogonal to every joint motion.
+    robot = preset("puma560")
+    q = np.array([0.3, 0.5, -0.8, 0.4, 0.0, 0.2])
+    size = characteristic_length(robot)
+    left, values, _ = np.linalg.svd(robot.jacobian(q) * np.array([1 / size] * 3 + [1] * 3)[:, None])
+    assert values[-1] < 1e-12 * values[0]
+    u = left[:, -1]
+    pose = robot.end_effector_pose(q)
+    target = pose.copy()
+    target[:3, 3] += 1e-3 * size * u[:3]
+    target[:3, :3] = rotation_matrix(1e-3 * u[np.newaxis, 3:])[0] @ pose[:3, :3]
+    result = ik(robot, target, q0=q, mode="pose", seeds=1)
+    assert result.reason == "singular"
+    assert "joints 4 and 6 are aligned" in result.message
+
+
+def test_joint_limit_names_the_joint() -> None:
+    # Both 2R solutions of this target have |q2| = 1 rad (57.3°): outside (−0.1, 0.1).
+    robot = two_r().with_limits(1, (-0.1, 0.1))
+    target = two_r().end_effector([0.3, 1.0])
+    result = ik(robot, target)
+    assert result.reason == "joint limit" and not result.success
+    assert "joint 2 (q2) at" in result.message and "57.3°" in result.message
+    assert "limit 5.73°" in result.message
+    assert -0.1 <= result.q[1] <= 0.1
+    free = ik(robot, target, respect_limits=False)
+    assert free.reason == "converged" and abs(abs(free.q[1]) - 1.0) <= 1e-8
+
+
+def test_prismatic_joint_limit() -> None:
+    # Cylindrical robot: height = 20 + q2, stroke 0…40; a target at height 65 needs q2 = 45.
+    robot = preset("cylindrical")
+    result = ik(robot, [20.0, 0.0, 65.0])
+    assert result.reason == "joint limit"
+    assert "joint 2 (q2) at 45, past its upper limit 40" in result.message
+
+
+def test_orientation_out_of_reach_of_a_planar_arm() -> None:
+    # A planar 2R pose turned 0.3 rad about the target's own x axis: the arm can match the
+    # point and its heading, never the tilt, and the warning says the pose over-constrains.
+    robot = two_r()
+    q = np.array([0.4, 0.9])
+    target = robot.end_effector_pose(q)
+    target[:3, :3] = target[:3, :3] @ rotation_matrix(np.array([[0.3, 0.0, 0.0]]))[0]
+    with pytest.warns(UserWarning, match="mask"):
+        result = ik(robot, target, mode="pose", q0=q, seeds=1)
+    assert result.reason == "unreachable"
+    assert result.orientation_error == pytest.approx(0.3, abs=1e-12)
+    assert result.position_error <= 1e-12
+    assert "closest configuration found" in result.message
+
+
+def test_no_warning_when_unmoved_rows_are_constrained() -> None:
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        ik(preset("planar_2r"), [30.0, 20.0, 0.0])  # z is never moved: not over-constrained
+        ik(preset("scara"), preset("scara").end_effector_pose([0.1, 0.2, 5, 0.3]), mode="pose")
+
+
+def test_tolerance_below_rounding_and_few_iterations() -> None:
+    robot = preset("puma560")
+    target = robot.end_effector_pose([0.1, 0.2, -0.3, 0.4, 0.5, 0.6])
+    tiny = ik(robot, target, mode="pose", tol=1e-300, orientation_tol=1e-300, seeds=1)
+    assert tiny.reason == "iteration limit" and "float64 rounding" in tiny.message
+    short = ik(robot, target, mode="pose", max_iterations=2, seeds=1)
+    assert short.reason == "iteration limit" and "within 2 iterations" in short.message
+    # Iterations add up over runs: 2 steps within the ranges, then 2 more from the same
+    # start without them (the PUMA has clipped joints; the UR5's all wrap, so it has one run).
+    assert short.iterations == 4
+    ur5 = preset("ur5")
+    ur5_target = ur5.end_effector_pose([0.1, 0.2, -0.3, 0.4, 0.5, 0.6])
+    assert ik(ur5, ur5_target, mode="pose", max_iterations=2, seeds=1).iterations == 2
+
+
+# -- vectorization ----------------------------------------------------------------------------
+
+
+def test_vectorized_equals_per_target() -> None:
+    robot = preset("puma560")
+    target = robot.end_effector_pose(random_q(robot, 50, seed=3))
+    target[:4, :3, 3] *= 3.0  # out of reach
+    batch = ik(robot, target, mode="pose")
+    assert batch.q.shape == (50, 6) and len(batch) == 50
+    assert batch.reason.count("unreachable") == 4
+    for i in range(50):
+        one = ik(robot, target[i], mode="pose")
+        assert np.array_equal(one.q, batch.q[i])
+        assert (one.reason, one.iterations, one.message) == (
+            batch.reason[i],
+            batch.iterations[i],
+            batch.message[i],
+        )
+        assert one.success == batch[i].success
+
+
+def test_per_target_starts() -> None:
+    robot = two_r()
+    q = np.array([[0.2, 0.5], [1.0, -0.7]])
+    result = ik(robot, robot.end_effector(q), q0=q + 0.01)
+    assert np.allclose(result.q, q, atol=1e-8)
+    assert repr(result) == "IKResult(2 targets: 2 converged)"
+    assert repr(result[0]).startswith("IKResult('converged', q=[")
+
+
+# -- rotation vectors ---------------------------------------------------------------------------
+
+
+def test_rotation_vector_over_the_whole_range() -> None:
+    rng = np.random.default_rng(8)
+    axis = rng.normal(size=(400, 3))
+    axis /= np.linalg.norm(axis, axis=1, keepdims=True)
+    angle = np.concatenate(
+        [rng.uniform(0, np.pi, 392), [0, 1e-12, 1e-6, 1.5, 1.6, 3.0, 3.14, 3.1415926]]
+    )
+    vector = axis * angle[:, None]
+    back = rotation_vector(rotation_matrix(vector))
+    assert np.allclose(np.linalg.norm(back, axis=1), angle, atol=2e-8)
+    small = angle < 3.14
+    assert np.allclose(back[small], vector[small], atol=1e-12)
+
+
+# -- bad input --------------------------------------------------------------------------------
+
+
+def _pose() -> np.ndarray:
+    return preset("puma560").end_effector_pose([0.1, 0.2, -0.3, 0.4, 0.5, 0.6])
+
+
+def _bad_cases() -> list[tuple[dict, str]]:
+    pose = _pose()
+    skewed = pose.copy()
+    skewed[0, 0] += 1e-3
+    mirrored = pose.copy()
+    mirrored[:3, 0] *= -1
+    last_row = pose.copy()
+    last_row[3, 3] = 2.0
+    return [
+        ({"target": [np.nan, 0, 0]}, "target"),
+        ({"target": [[1, 0, 0], [np.inf, 0, 0]]}, "target[1]"),
+        ({"target": [1, 2]}, "target"),
+        ({"target": np.zeros((2, 3, 3))}, "target"),
+        ({"target": skewed, "mode": "pose"}, "target"),
+        ({"target": mirrored, "mode": "pose"}, "target"),
+        ({"target": last_row}, "target"),
+        ({"target": [0.5, 0, 0.5], "mode": "pose"}, "target"),
+        ({"mode": "orientation"}, "mode"),
+        ({"mode": 3}, "mode"),
+        ({"q0": [0, 0]}, "q0"),
+        ({"q0": [0, 0, np.nan, 0, 0, 0]}, "q0"),
+        ({"q0": np.zeros((3, 6))}, "q0"),
+        ({"tol": 0.0}, "tol"),
+        ({"tol": -1e-9}, "tol"),
+        ({"tol": np.nan}, "tol"),
+        ({"orientation_tol": 0}, "orientation_tol"),
+        ({"max_iterations": 0}, "max_iterations"),
+        ({"max_iterations": 10_001}, "max_iterations"),
+        ({"max_iterations": 20.0}, "max_iterations"),
+        ({"seeds": 0}, "seeds"),
+        ({"seeds": 65}, "seeds"),
+        ({"seed": -1}, "seed"),
+        ({"respect_limits": "yes"}, "respect_limits"),
+        ({"mask": [0, 0, 0, 0, 0, 0], "mode": "pose", "target": pose}, "mask"),
+        ({"mask": [1, 1, 1], "mode": "pose", "target": pose}, "mask"),
+        ({"mask": [1, 1, 1, -1, 0, 0], "mode": "pose", "target": pose}, "mask"),
+        ({"mask": [1, 1, 1, 1, 0, 0]}, "mask"),
+        ({"robot": "puma560"}, "robot"),
+    ]
+
+
+@pytest.mark.parametrize(("changes", "field"), _bad_cases())
+def test_bad_input_names_the_field(changes: dict, field: str) -> None:
+    arguments = {"robot": preset("puma560"), "target": [0.5, 0.0, 0.5], **changes}
+    with pytest.raises(InvalidInputError) as error:
+        ik(**arguments)
+    assert error.value.field == field
+
+
+def test_memory_budget_is_checked_first() -> None:
+    set_memory_budget(1)
+    try:
+        with pytest.raises(InvalidInputError) as error:
+            ik(preset("puma560"), np.zeros((20_000, 3)))  # ~117 MB estimated
+        assert error.value.field == "target"
+    finally:
+        set_memory_budget(None)
