@@ -171,7 +171,11 @@ def stage_contents(files: Path) -> None:
     """notebooks/ and course/ (no solutions), each notebook opening with INSTALL_CELL."""
     junk = shutil.ignore_patterns(".ipynb_checkpoints", "__pycache__", "*.pyc")
     shutil.copytree(ROOT / "notebooks", files / "notebooks", ignore=junk)
-    without_solutions = shutil.ignore_patterns("solutions", ".ipynb_checkpoints", "__pycache__")
+    # The instructor's notes quote the hints and the lab's facts: a student site leaves
+    # them out with the solutions.
+    without_solutions = shutil.ignore_patterns(
+        "solutions", "INSTRUCTOR.md", ".ipynb_checkpoints", "__pycache__"
+    )
     shutil.copytree(ROOT / "course", files / "course", ignore=without_solutions)
     for path in sorted(files.rglob("*.ipynb")):
         add_install_cell(path)

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import math
 import re
 
 import pytest
@@ -179,3 +180,49 @@ def test_a_library_call_pasted_as_the_answer_is_refused_kindly(pasted) -> None:
     # The same matrix written out is graded as usual.
     written = "[[cos(q1), -sin(q1), 0, 0], [sin(q1), cos(q1), 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]"
     assert rc.check_matrix(written, expected).ok
+
+
+# -- numbers rounded too coarsely ---------------------------------------------------------
+
+
+@pytest.fixture(scope="module")
+def thirty_degrees():
+    link = rc.Robot.from_dh([(0, 0, 2, 0, "R")])
+    return rc.expected_matrix(link, "A1", q=[math.radians(30)])  # cos 30° = 0.8660, 2 cos = 1.7321
+
+
+TWO_DECIMALS = [[0.87, -0.5, 0, 1.73], [0.5, 0.87, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]]
+
+
+def test_coarse_rounding_is_named_without_the_answer(thirty_degrees):
+    result = rc.check_matrix(TWO_DECIMALS, thirty_degrees)
+    assert not result.ok and result.diagnosis == "coarse_rounding"
+    assert result.wrong_entries == [(0, 0), (0, 3), (1, 1)]
+    assert result.hints == [
+        "Entries (1,1), (1,4), (2,2) are rounded too coarsely: keep at least 4 significant "
+        "digits (to the digits you kept, they are right)."
+    ]
+    revealed = str(rc.check_matrix(TWO_DECIMALS, thirty_degrees, reveal=True))
+    assert "entry (1,1): expected 0.866, you wrote 0.87" in revealed
+    assert "rounded too coarsely" in revealed
+
+
+def test_four_significant_digits_pass_and_a_wrong_digit_is_not_rounding(thirty_degrees):
+    assert rc.check_matrix(
+        [[0.8660, -0.5, 0, 1.732], [0.5, 0.8660, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]],
+        thirty_degrees,
+    ).ok
+    result = rc.check_matrix(  # 0.85 is not 0.866 to two decimals
+        [[0.85, -0.5, 0, 1.7321], [0.5, 0.866, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]], thirty_degrees
+    )
+    assert result.wrong_entries == [(0, 0)] and result.diagnosis is None
+
+
+def test_no_default_hint_of_the_corpus_quotes_an_expected_entry():
+    from .diagnosis_corpus import CASES
+    from .diagnosis_corpus.references import reference
+
+    for case in CASES:
+        if not case.ok:
+            result = rc.check_matrix(case.answer, reference(case.reference), **case.options)
+            assert not re.search(r"\): expected ", str(result)), case.id

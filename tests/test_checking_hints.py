@@ -242,3 +242,141 @@ def test_rotation_pattern_names_where_the_kernel_puts_the_sines():
         for sign, row, col in found:
             expected = np.sin(0.3) * (-1 if sign == "−" else 1)
             assert matrix[int(row) - 1, int(col) - 1] == pytest.approx(expected, abs=1e-15)
+
+
+# -- 6. one primary diagnosis, ranked; equivalent readings in the same sentence ------------
+
+
+def _paper_reference(name: str, **kw) -> rc.ExpectedMatrix:
+    robot = rc.Robot(
+        [rc.Module("Rz"), rc.Module("Ry", a=(0, 0, 20)), rc.Module("Ry", a=(30, 0, 0))],
+        end_effector=(40, 0, 0),
+    )
+    return rc.expected_matrix(robot, name, **kw)
+
+
+def test_one_sign_slip_gets_one_diagnosis_and_names_the_equivalent_reading():
+    reference = rc.expected_matrix(rc.Robot([rc.Module("Ry", a=(30, 0, 0))]), "A1")
+    student = "[[cos(q1), 0, -sin(q1), 30], [0, 1, 0, 0], [sin(q1), 0, cos(q1), 0], [0, 0, 0, 1]]"
+    result = check_matrix(student, reference)
+    assert result.diagnosis == "rotation_direction"
+    assert result.diagnoses[:2] == ("rotation_direction", "transposed_rotation")
+    assert result.mistakes == ["rotation_direction"]  # one diagnosis, not two
+    assert result.hints == [
+        "The sine terms of A1 (module M1, Ry with a = (30, 0, 0)) have the wrong sign, so the "
+        "joint turns the wrong way: a positive rotation about y has +sin in entry (1,3) and "
+        "−sin in entry (3,1); here that gives the same numbers as writing the rotation part "
+        "transposed (its axes as rows).",
+        "Wrong entries: (1,3), (3,1).",
+    ]
+
+
+def test_every_ry_with_flipped_sines_is_one_compound_slip():
+    student = (
+        "[[cos(q1)*cos(q2 + q3), -sin(q1), -cos(q1)*sin(q2 + q3), 30*cos(q1)*cos(q2)],"
+        " [sin(q1)*cos(q2 + q3), cos(q1), -sin(q1)*sin(q2 + q3), 30*sin(q1)*cos(q2)],"
+        " [sin(q2 + q3), 0, cos(q2 + q3), 20 + 30*sin(q2)], [0, 0, 0, 1]]"
+    )
+    result = check_matrix(student, _paper_reference("M3"))
+    assert result.diagnosis == "rotation_direction_all"
+    assert result.hints[0].startswith("The sine terms of every Ry module (A2 and A3) have the")
+    assert result.hints[1] == "Wrong entries: (1,3), (2,3), (3,1), (3,4)."
+    assert len(result.hints) == 2
+
+
+def test_an_answer_at_q_0_is_the_parking_pose_not_degree_mode():
+    reference = rc.expected_matrix(rc.Robot([rc.Module("Rz")]), "A1", q=[0.5])
+    result = check_matrix(np.eye(4), reference)
+    assert result.diagnosis == "parking_pose"
+    assert "radians_as_degrees" in result.diagnoses  # it fits two entries only: ranked lower
+    assert result.hints[0] == (
+        "Your numbers are those of the parking pose q = 0 (every joint at 0), but this "
+        "exercise asks for q = (0.5): put the joint values in."
+    )
+
+
+def test_a_forgotten_joint_is_not_a_missing_point():
+    result = check_matrix(
+        "[70*cos(q1)*cos(q2), 70*sin(q1)*cos(q2), 20 - 70*sin(q2)]", _paper_reference("p_EE")
+    )
+    assert result.diagnoses == ("joint_left_out",)
+    assert result.hints[0].startswith(
+        "q3 is missing from your answer: it is what you get with q3 = 0"
+    )
+
+
+@pytest.mark.parametrize(
+    ("q", "student", "other"),
+    [
+        # the point turned by R3 only: R3·(40, 0, 0) = (0, 0, 40) at q = (90°, 0, -90°)
+        ([np.pi / 2, 0, -np.pi / 2], [0, 0, 40], "missing_offset_all"),
+        ([0, 0, 0], [40, 0, 0], "missing_offset_all"),
+    ],
+)
+def test_homogeneous_coordinate_0_is_named(q, student, other):
+    result = check_matrix(student, _paper_reference("p_EE", q=q))
+    assert result.diagnoses[:2] == ("homogeneous_coordinate", other)
+    assert result.hints[0].startswith(
+        "You multiplied M3 by [Px, Py, Pz, 0]ᵀ: a point's homogeneous"
+    )
+    assert "the same numbers as leaving out the offsets of every Ry module" in result.hints[0]
+
+
+def test_two_joint_values_exchanged():
+    student = rc.Robot(  # the same robot, evaluated with q2 and q3 exchanged
+        [rc.Module("Rz"), rc.Module("Ry", a=(0, 0, 20)), rc.Module("Ry", a=(30, 0, 0))],
+        end_effector=(40, 0, 0),
+    ).end_effector([0.3, 0.7, -0.4])
+    result = check_matrix(np.round(student, 4), _paper_reference("p_EE", q=[0.3, -0.4, 0.7]))
+    assert result.diagnosis == "swapped_joints"
+    assert result.hints[0].startswith("q2 and q3 are exchanged")
+
+
+def test_lengths_in_millimetres_for_metres():
+    reference = rc.expected_matrix(rc.preset("ur5"), "p_EE", q=np.zeros(6))
+    result = check_matrix([-817.25, -191.45, -5.491], reference)
+    assert result.diagnosis == "unit_slip"
+    assert result.hints[0] == (
+        "All your lengths are 1000 times too large: millimetres where the exercise's data are "
+        "in metres? Keep the unit of the exercise."
+    )
+
+
+def test_degrees_for_the_joint_angle_only():
+    reference = rc.expected_matrix(rc.preset("puma560"), "A1", q=[np.pi / 6, 0, 0, 0, 0, 0])
+    joint_only = np.round(rc.dh_matrix(30, 0, 0, np.pi / 2), 4)  # α = π/2 read right
+    result = check_matrix(joint_only, reference)
+    assert result.diagnosis == "degrees_as_radians"
+    assert "the joint angles in degrees" in result.hints[0]
+    everything = np.round(rc.dh_matrix(30, 0, 0, 90), 4)  # α typed as 90 too
+    result = check_matrix(everything, reference)
+    assert result.diagnosis == "degrees_as_radians"
+    assert "angles in degrees fed to sin and cos" in result.hints[0]
+    assert "joint angles" not in result.hints[0]
+
+
+def test_a_single_coincidental_entry_is_no_diagnosis():
+    frame = rc.Robot([rc.Module("Rz", a=(30, 0, 20))], end_effector=(40, 0, 0))
+    reference = rc.expected_matrix(frame, "p_EE", q=[np.pi / 2])  # (30, 40, 20)
+    degree_mode = frame.end_effector([np.radians(np.pi / 2)])  # (69.985, 1.0965, 20)
+    result = check_matrix([degree_mode[0], 7, 20], reference)  # x happens to match, y not
+    assert result.wrong_entries == [(0, 0), (1, 0)]
+    assert result.diagnosis is None and result.mistakes == []
+    assert not any("degree mode" in hint for hint in result.hints)
+    # one coarse number (0.1 for 0.0892, z without the offset d5) proves nothing either
+    ur5 = rc.expected_matrix(rc.preset("ur5"), "p_EE", q=np.zeros(6))
+    assert check_matrix([-0.81725, -0.19145, 0.1], ur5).diagnosis is None
+
+
+def test_a_rounded_wrong_result_still_names_the_mistake():
+    reference = rc.expected_matrix(rc.Robot.from_dh([(0, 0, 2, 0, "R")]), "A1", q=[np.pi / 6])
+    degrees = np.round(rc.dh_matrix(30, 0, 2, 0), 2)  # cos(30 rad) = 0.15, …
+    assert degrees[0, 0] == 0.15 and degrees[1, 3] == -1.98
+    assert check_matrix(degrees, reference).diagnosis == "degrees_as_radians"
+
+
+def test_right_and_unanswered_results_have_no_or_their_own_diagnosis():
+    reference = rc.expected_matrix(rc.Robot([rc.Module("Rz")]), "A1")
+    assert check_matrix(rc.transfer_matrix("Rz", 0) * 0 + np.eye(4), np.eye(4)).diagnoses == ()
+    assert check_matrix(None, reference).diagnosis == "no_answer"
+    assert check_matrix(np.eye(3), reference).diagnosis == "shape"

@@ -1,8 +1,9 @@
 """Lessons 1–4 of the course: the exercises' checks are real.
 
 For every exercise a typical wrong answer must fail its check cell with a hint that names
-the mistake (the hint comes from robotconf's checker), and the solutions must pass. Each
-notebook runs once with all its answers replaced, so the whole file takes seconds.
+the mistake (the hint comes from robotconf's checker), and the solutions must pass; right
+answers typed as text or rounded (1.5708 for π/2, 0.8776 for cos 0.5) pass too. Each
+notebook runs once per set of answers, with all its answers replaced.
 """
 
 from __future__ import annotations
@@ -119,6 +120,30 @@ WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
 }
 
 
+# Right answers as students type them: text with numbers and formulas, rounded numbers.
+APPROXIMATE_ANSWERS: dict[str, dict[str, str]] = {
+    "01_homogeneous_transforms": {
+        "answer_2": 'answer_2 = "[[cos(pi/2), -sin(pi/2), 0, 30], [sin(pi/2), cos(pi/2), 0, 0],'
+        ' [0, 0, 1, 20], [0, 0, 0, 1]]"',
+        # π/2 typed as 1.5708: 40·cos(1.5708) = -1.5e-4, within 0.001 of 0
+        "answer_3": 'answer_3 = "[30 + 40*cos(1.5708), 40*sin(1.5708), 20]"',
+    },
+    "02_elementary_transforms": {
+        # cos 0.5 = 0.87758, sin 0.5 = 0.47943, to 4 decimals
+        "answer_4": 'answer_4 = "[[0.8776, -0.4794, 0, 0], [0.4794, 0.8776, 0, 0],'
+        ' [0, 0, 1, 0], [0, 0, 0, 1]]"',
+    },
+    "03_composing_a_chain": {
+        "answer_3": 'answer_3 = "[30 + 40, 0, 20]"',
+        "answer_4": "answer_4 = [0, 30.02, 60.05]",  # within 0.1 % of (0, 30, 60)
+        "answer_5": "answer_5 = np.array([[70.0], [0.0], [70.0]])",  # a column
+    },
+    "04_module_method_classic_arms": {
+        "answer_4": 'answer_4 = "[20*cos(0), 30*sin(pi/2), 30 - 5]"',
+    },
+}
+
+
 def _lessons() -> list[str]:
     return sorted(WRONG_ANSWERS)
 
@@ -165,6 +190,13 @@ def test_blank_exercises_ask_for_an_answer(lesson):
 def test_solutions_pass_their_checks(lesson):
     errors = run_with_answers(solutions_path(_exercises(lesson)))
     assert errors and not any(errors.values()), errors
+
+
+@pytest.mark.parametrize("lesson", sorted(APPROXIMATE_ANSWERS))
+def test_text_and_rounded_answers_pass(lesson):
+    answers = APPROXIMATE_ANSWERS[lesson]
+    errors = run_with_answers(_exercises(lesson), answers)
+    assert all(errors[variable] == "" for variable in answers), errors
 
 
 @pytest.mark.parametrize(("lesson", "variable"), _cases())

@@ -2,12 +2,14 @@
 
 For every exercise a typical wrong answer must fail its check cell with a hint that names
 the mistake, and the solutions must pass. The hints of matrix exercises come from
-robotconf's checker (``rc.assert_matrix``); the numeric exercises (finite-difference
-spikes, singular joint values) use ``rc.check_matrix`` with a tolerance of 0.1 % and add
-a hint of their own, so rounded numbers (3.1416 for π) and text answers (``"[0, pi]"``)
-pass. Each notebook runs once: the exercises notebook with every answer replaced by a
-wrong one, the solutions notebook as it is; lessons 7 and 8 once more with rounded and
-text answers.
+robotconf's checker (``rc.assert_matrix``); the other answers go through the same parser
+and numeric judge with a tolerance of 0.1 % (0.001 near 0): a velocity
+(``rc.assert_vector``), finite-difference spikes (``rc.assert_value``), the singular
+joint values (``rc.assert_set``, modulo 2π) and an elbow angle (``rc.assert_angle``), each
+with the exercise's own hint. So rounded numbers (3.1416 for π, 1.5708 for π/2), text
+answers (``"[pi, 0]"``) and answers a whole turn away pass. Each notebook runs once with
+every answer replaced by a wrong one and once as the solutions; lessons 7 and 8 run twice
+more with rounded and text answers and once more with other typical mistakes.
 """
 
 from __future__ import annotations
@@ -84,7 +86,7 @@ WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
             "The whole matrix is transposed",
         ),
         # y × (p − o3) taken as +40 along z
-        "answer_2": ("answer_2 = [0, 35, 40]", "have the wrong sign"),
+        "answer_2": ("answer_2 = [0, 35, 40]", "The sign of z is wrong."),
         # the columns of joints 2 and 3 exchanged
         "answer_3": (
             "answer_3 = [[0, 40, 40], [30, 0, 0], [0, 0, -30]]",
@@ -101,22 +103,55 @@ WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
         # det J with the wrong sign
         "answer_2": ('answer_2 = "[[-2*sin(q2)]]"', "sign error"),
         # the singular angles in degrees
-        "answer_3": ("answer_3 = [0, 180]", "radians (180° = π), not in degrees"),
+        "answer_3": ("answer_3 = [0, 180]", "180 looks like a solution in degrees"),
         # the arm folded back: an elbow singularity, the tip 10 mm off the z axis
         "answer_4": ("answer_4 = np.pi", "l2 cos q2 + l3 cos(q2 + q3) = 0"),
     },
 }
 
-# Right answers as students type them: rounded, as text, in another order.
-APPROXIMATE_ANSWERS: dict[str, dict[str, str]] = {
+# More typical mistakes on the exercises that are not matrices: each is named.
+MORE_WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
     "07_velocity_acceleration": {
-        "answer_4": 'answer_4 = "(0.01 - 1.99) / (2 * 0.01)"',
-        "answer_5": "answer_5 = -199.1",  # within 0.1 % of -199
+        # the velocity in m/s·1000: mm and m mixed up
+        "answer_2": ("answer_2 = [0, 0.035, -0.04]", "1000 times too small"),
+        # q[k-1] - q[k+1]: the difference the wrong way round
+        "answer_4": ("answer_4 = 99", "has the wrong sign"),
+        # the jump not divided by dt
+        "answer_5": ("answer_5 = -1.99", "100 times too small"),
     },
     "08_workspace_singularities": {
-        "answer_3": 'answer_3 = "[3.1416, 0]"',  # π rounded, larger first, as text
-        "answer_4": "answer_4 = 2.4189",  # arccos(-3/4) rounded
+        # only the stretched arm
+        "answer_3": ("answer_3 = [0]", "1 is missing: the arm folded"),
+        # arccos(-3/4) in degrees
+        "answer_4": ("answer_4 = 138.59", "You gave degrees: write q3 in radians"),
     },
+}
+
+# Right answers as students type them: rounded, as text, in another order, a turn away.
+# Lessons run once per variant.
+APPROXIMATE_ANSWERS: dict[str, list[dict[str, str]]] = {
+    "07_velocity_acceleration": [
+        {
+            "answer_2": 'answer_2 = "[0, 35, -40]"',
+            "answer_4": 'answer_4 = "(0.01 - 1.99) / (2 * 0.01)"',
+            "answer_5": "answer_5 = -199.1",  # within 0.1 % of -199
+        },
+        {
+            "answer_2": "answer_2 = np.array([[0.0], [35.0], [-40.02]])",  # a column, rounded
+            "answer_4": 'answer_4 = "-99"',
+            "answer_5": 'answer_5 = "-1.99 / 0.01"',
+        },
+    ],
+    "08_workspace_singularities": [
+        {
+            "answer_3": 'answer_3 = "[3.1416, 0]"',  # π rounded, larger first, as text
+            "answer_4": "answer_4 = 2.4189",  # arccos(-3/4) rounded
+        },
+        {
+            "answer_3": "answer_3 = [2 * np.pi, 3.1416]",  # 0 given as a full turn
+            "answer_4": 'answer_4 = "2.4189 - 2*pi"',  # the same angle, a turn back
+        },
+    ],
 }
 
 
@@ -159,10 +194,23 @@ def test_solutions_pass_their_checks(lesson):
     assert errors and not any(errors.values()), errors
 
 
-@pytest.mark.parametrize("lesson", sorted(APPROXIMATE_ANSWERS))
-def test_rounded_and_text_answers_pass(lesson):
-    errors = run_with_answers(_exercises(lesson), APPROXIMATE_ANSWERS[lesson])
-    assert all(errors[variable] == "" for variable in APPROXIMATE_ANSWERS[lesson]), errors
+@pytest.mark.parametrize(
+    ("lesson", "variant"),
+    [(lesson, i) for lesson, variants in APPROXIMATE_ANSWERS.items() for i in range(len(variants))],
+)
+def test_rounded_and_text_answers_pass(lesson, variant):
+    answers = APPROXIMATE_ANSWERS[lesson][variant]
+    errors = run_with_answers(_exercises(lesson), answers)
+    assert all(errors[variable] == "" for variable in answers), errors
+
+
+@pytest.mark.parametrize("lesson", sorted(MORE_WRONG_ANSWERS))
+def test_more_typical_mistakes_are_named(lesson):
+    mistakes = MORE_WRONG_ANSWERS[lesson]
+    errors = run_with_answers(_exercises(lesson), {v: code for v, (code, _) in mistakes.items()})
+    for variable, (_, words) in mistakes.items():
+        assert "AssertionError" in errors[variable], errors[variable]
+        assert words in errors[variable], errors[variable]
 
 
 @pytest.mark.parametrize(("lesson", "variable"), _cases())

@@ -147,11 +147,12 @@ def test_site_holds_the_notebooks_and_the_course_without_solutions(site: Path) -
     files = site / "files"
     names = {p.relative_to(files).as_posix() for p in files.rglob("*") if p.is_file()}
     expected = {f"notebooks/{p.name}" for p in (ROOT / "notebooks").glob("*.ipynb")}
-    for lesson in sorted((ROOT / "course").glob("0*_*")):
+    for lesson in sorted(p for p in (ROOT / "course").iterdir() if p.name[:2].isdigit()):
         expected |= {f"course/{lesson.name}/{p.name}" for p in lesson.glob("*.ipynb")}
     assert "notebooks/configurator.ipynb" in expected and len(expected) > 16
     assert expected | {"course/README.md", "paper_robot_3d.html"} <= names
     assert not [n for n in names if "solutions" in n], "course/solutions/ must stay out"
+    assert "course/INSTRUCTOR.md" not in names, "the instructor's notes must stay out"
 
     # The file browser's listing, as the site serves it.
     listing = json.loads((site / "api/contents/notebooks/all.json").read_text())

@@ -14,6 +14,16 @@ Expected answers and the checker
     decides by numbers at seeded random points, refuses entries that are not real, and
     does algebra only within a small budget, so any answer is judged in ≤ 2 s for a 4×4
     matrix (see :func:`check_matrix`, Notes).
+Answers that are not matrices (same parser and numeric judge, 0.1 % tolerance)
+    :func:`check_value`, :func:`check_vector`, :func:`check_angle`, :func:`check_set`,
+    :func:`check_interval`, their ``assert_*`` forms (:func:`assert_value`,
+    :func:`assert_vector`, :func:`assert_angle`, :func:`assert_set`,
+    :func:`assert_interval`) and :class:`AnswerCheck`.
+DH tables (judged by the robot they describe: joint axes and end-effector at seeded q)
+    :func:`check_dh_table`, :func:`assert_dh_table`, :class:`DHTableCheck`,
+    :func:`parse_dh_rows`
+Per-student exercise parameters (the same id gives the same numbers on every machine)
+    :class:`Variant`
 Student text (a whitelist parser: nothing is evaluated)
     :func:`parse_expression`, :func:`parse_matrix`, :class:`ParserLimits`
 
@@ -21,9 +31,22 @@ Student text (a whitelist parser: nothing is evaluated)
 '0.3'
 """
 
+from ._answer_checks import check_angle, check_value, check_vector
+from ._answer_checks_assert import (
+    assert_angle,
+    assert_interval,
+    assert_set,
+    assert_value,
+    assert_vector,
+)
+from ._answer_checks_interval import check_interval
+from ._answer_checks_result import AnswerCheck
+from ._answer_checks_sets import check_set
 from ._check_result import MatrixCheck
 from ._checker import assert_matrix, check_matrix
 from ._derivation import Derivation, derivation
+from ._dh_table_check import DHTableCheck, assert_dh_table, check_dh_table
+from ._dh_table_text import parse_dh_rows
 from ._expected import ExpectedMatrix, as_expected, evaluate, expected_matrix, sample_points
 from ._formatting import format_number, latex_text, matrix_grid, matrix_latex
 from ._mistakes import ROTATION_PATTERN, Candidate, generic_candidates, is_rotation_like
@@ -39,6 +62,7 @@ from ._symbolic import (
 )
 from ._symbolic_chain import SymbolicChain, simplify_matrix, symbolic_chain
 from ._symbolic_limits import symbolic_fits
+from ._variants import Variant
 
 __all__ = [
     # derivations
@@ -69,10 +93,29 @@ __all__ = [
     "check_matrix",
     "assert_matrix",
     "MatrixCheck",
+    # answers that are not matrices
+    "check_value",
+    "check_vector",
+    "check_angle",
+    "check_set",
+    "check_interval",
+    "assert_value",
+    "assert_vector",
+    "assert_angle",
+    "assert_set",
+    "assert_interval",
+    "AnswerCheck",
     "Candidate",
     "generic_candidates",
     "is_rotation_like",
     "ROTATION_PATTERN",
+    # DH tables
+    "check_dh_table",
+    "assert_dh_table",
+    "DHTableCheck",
+    "parse_dh_rows",
+    # per-student variants
+    "Variant",
     # student text
     "parse_expression",
     "parse_matrix",

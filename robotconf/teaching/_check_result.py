@@ -25,18 +25,38 @@ class MatrixCheck:
     hints : list of str
         What the mistake most likely is, in sentences a student can act on.
     mistakes : list of str
-        Codes of the recognised mistakes: ``"wrong_order"``, ``"transposed_rotation"``,
+        Codes of the hints, in their order (the primary diagnosis first, then the
+        entry-level ones): ``"wrong_order"``, ``"transposed_rotation"``,
         ``"transposed_matrix"``, ``"rotation_direction"``, ``"sign_error"``,
         ``"offset_after_rotation"``, ``"missing_offset"``, ``"dh_convention"``,
         ``"degrees_as_radians"``, ``"radians_as_degrees"``, ``"row_swap"``,
-        ``"column_swap"``, ``"swapped_d_a"``, ``"shape"``, ``"no_answer"``,
-        ``"too_complicated"``.
+        ``"column_swap"``, ``"swapped_d_a"``, ``"homogeneous_coordinate"``,
+        ``"parking_pose"``, ``"joint_left_out"``, ``"swapped_joints"``, ``"unit_slip"``,
+        ``"coarse_rounding"``, the same slip in every module of a kind
+        ``"<code>_all"`` (``"rotation_direction_all"``, ``"missing_offset_all"``,
+        ``"offset_after_rotation_all"``, ``"sign_error_all"``, ``"swapped_d_a_all"``),
+        ``"shape"``, ``"no_answer"``, ``"too_complicated"``.
     student : sympy.Matrix or None
         The student's matrix as understood; ``None`` when there is no answer yet.
     expected : ExpectedMatrix
     unchecked_entries : list of (int, int)
         0-based entries too complicated to check within the checker's budget (neither
         right nor known to be wrong; ``ok`` is False while there are any).
+    diagnoses : tuple of str
+        Every explanation that fits the wrong entries, ranked best first, each code once
+        (see :mod:`robotconf.teaching._ranking`); empty when the answer is right or
+        nothing fits. ``("no_answer",)``, ``("shape",)`` or ``("transposed_matrix",)``
+        when there is no answer or it has another shape.
+
+    Examples
+    --------
+    >>> import numpy as np
+    >>> from robotconf.teaching import check_matrix
+    >>> result = check_matrix([[3, 4], [1, 2]], np.array([[1, 2], [3, 4]]))
+    >>> result.diagnosis, result.diagnoses
+    ('row_swap', ('row_swap',))
+    >>> check_matrix([[1, 2], [3, 4]], np.array([[1, 2], [3, 4]])).diagnosis is None
+    True
     """
 
     ok: bool
@@ -47,6 +67,12 @@ class MatrixCheck:
     expected: ExpectedMatrix
     reveal: bool = field(default=False, repr=False)
     unchecked_entries: list[tuple[int, int]] = field(default_factory=list)
+    diagnoses: tuple[str, ...] = ()
+
+    @property
+    def diagnosis(self) -> str | None:
+        """The primary diagnosis: the best-ranked mistake code, or ``None``."""
+        return self.diagnoses[0] if self.diagnoses else None
 
     def __bool__(self) -> bool:
         return self.ok
@@ -199,15 +225,23 @@ def show_expected(entry: Any, limit: int = 300) -> str:
 
     The expected side is trusted, but a hint must not cost seconds: only an entry of at
     most 40 nodes holding ``sin``/``cos`` is passed through ``trigsimp``, and only when
-    that makes it shorter.
+    that makes it shorter. A constant (``sqrt(3)/2``, ``cos(pi/6)``) shows as a decimal,
+    like the numbers a student types.
 
     >>> import sympy
     >>> a, b = sympy.symbols("q1 q2")
     >>> show_expected(sympy.cos(a) * sympy.cos(b) - sympy.sin(a) * sympy.sin(b))
     'cos(q1 + q2)'
+    >>> show_expected(sympy.sqrt(3) / 2), show_expected(20 * sympy.cos(sympy.pi / 6))
+    ('0.866', '17.3205')
     """
     import sympy
 
+    small = _node_count(entry, _SIMPLIFIED_NODES) <= _SIMPLIFIED_NODES
+    if not entry.free_symbols and not entry.is_Integer and small:
+        value = complex(entry.evalf(17))
+        if value.imag == 0:
+            return format_decimal(value.real)
     if (
         not entry.is_Number
         and entry.has(sympy.sin, sympy.cos)

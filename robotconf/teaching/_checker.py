@@ -5,8 +5,9 @@ bounded (see :func:`check_matrix`, "Budget"): numbers decide first (both matrice
 ``samples`` seeded random points, in complex arithmetic:
 :mod:`robotconf.teaching._numeric_judge`); only an entry the numbers cannot decide gets
 symbolic work, and only within :mod:`robotconf.teaching._budget_rules`. Wrong entries are
-then explained by rebuilding the usual mistakes (see :mod:`robotconf.teaching._mistakes`)
-and looking for the one the student's answer matches, numerically too.
+then explained by rebuilding the usual mistakes (see :mod:`robotconf.teaching._mistakes`),
+keeping the ones the student's answer matches, numerically too, and ranking them
+(:mod:`robotconf.teaching._diagnosis`): the hints name one primary diagnosis.
 """
 
 from __future__ import annotations
@@ -21,9 +22,9 @@ from .._errors import InvalidInputError
 from .._validation import check_finite_number, check_integer
 from ._budget_rules import Allowance
 from ._check_result import MatrixCheck
+from ._diagnosis import diagnose
 from ._expected import ExpectedMatrix, as_expected, sample_points
-from ._hints import NO_ANSWER, entries_text, entry_hints, explain, shape_hint
-from ._mistakes import context_candidates, generic_candidates
+from ._hints import NO_ANSWER, entries_text, shape_hint
 from ._numeric_eval import MAX_EVALUATED_NODES
 from ._numeric_judge import (
     MAX_ANSWER_NODES,
@@ -343,7 +344,11 @@ def check_matrix(
        (``MAX_CHECK_TERMS``), for at most 4 entries (``MAX_SYMBOLIC_ENTRIES``); all in
        :mod:`robotconf.teaching._budget_rules`. Anything else is "too complicated to
        check".
-    3. Hints compare numbers only (candidate mistakes at the same points).
+    3. Hints compare numbers only: every candidate mistake is rebuilt at the same points,
+       the ones that fit are ranked (all wrong entries explained first, then how many,
+       then how specific; a match resting on one coincidental entry is dropped), and the
+       hints name one primary diagnosis (``MatrixCheck.diagnosis``), mentioning an
+       equivalent reading of the same numbers in the same sentence.
 
     Worst case: ≤ 2 s per call for a 4×4 answer (typed text up to ``max_length``, or
     sympy objects within the caps above) on a 2-core machine; ``benchmarks/
@@ -361,6 +366,8 @@ def check_matrix(
     (False, [(0, 2), (2, 0)])
     >>> print(result.hints[0])  # doctest: +ELLIPSIS
     The sine terms of A2 (module M2, Ry with a = (0, 0, 20)) have the wrong sign, ...
+    >>> result.diagnosis
+    'rotation_direction'
     >>> check_matrix([[1, 0], [0, 1]], np.eye(2)).ok
     True
     >>> check_matrix("1/2", 0.5).ok  # a 1×1 answer needs no brackets
@@ -399,7 +406,9 @@ def _check(
     limits = limits or ParserLimits()
     reference = as_expected(expected)
     if student is None:  # the exercise's placeholder: not answered yet
-        return MatrixCheck(False, [], [NO_ANSWER], ["no_answer"], None, reference, reveal)
+        return MatrixCheck(
+            False, [], [NO_ANSWER], ["no_answer"], None, reference, reveal, diagnoses=("no_answer",)
+        )
     table = _symbol_table(reference, symbols)
     expected_m = reference.matrix
     scalar = expected_m.shape == (1, 1)
@@ -411,7 +420,7 @@ def _check(
             transposed_wrong = still_wrong | set(unclear)
         hint = shape_hint(matrix.shape, expected_m, transposed_wrong)
         code = "shape" if transposed_wrong is None else "transposed_matrix"
-        return MatrixCheck(False, [], [hint], [code], matrix, reference, reveal)
+        return MatrixCheck(False, [], [hint], [code], matrix, reference, reveal, diagnoses=(code,))
     env, k, judgement, wrong, unchecked = _compare(matrix, reference, tol, samples, seed)
     if not wrong and not unchecked:
         return MatrixCheck(True, [], [], [], matrix, reference, reveal)
@@ -421,32 +430,22 @@ def _check(
             False, [], only, ["too_complicated"], matrix, reference, reveal, sorted(unchecked)
         )
     s_values, e_values = judgement.student, judgement.expected
-    candidates = context_candidates(reference, env, k) + generic_candidates(e_values)
-    full, partial = explain(candidates, wrong, s_values, e_values, tol)
-    hints: list[str] = []
-    codes: list[str] = []
-    for candidate in full[:3]:
-        if candidate.message not in hints:
-            hints.append(candidate.message)
-            codes.append(candidate.code)
-    explained = set(wrong) if full else set()
-    if not full:
-        for candidate, entries in partial[:1]:  # the best one; more would be guesswork
-            hints.append(f"{candidate.message} (entries {entries_text(entries)})")
-            codes.append(candidate.code)
-            explained |= entries
-    more, more_codes = entry_hints(
-        wrong - explained, matrix, expected_m, s_values, e_values, tol, reveal
-    )
-    hints += more
-    codes += more_codes
+    found = diagnose(reference, env, k, wrong, matrix, s_values, e_values, tol, reveal)
+    hints, codes = list(found.hints), list(found.mistakes)
     if unchecked:
-        hints += _unchecked_hints(unchecked)
+        at = len(hints) - 1 if hints and hints[-1].startswith("Wrong entries: ") else len(hints)
+        hints[at:at] = _unchecked_hints(unchecked)
         codes.append("too_complicated")
-    if full:
-        hints.append(f"Wrong entries: {entries_text(wrong)}.")
     return MatrixCheck(
-        False, sorted(wrong), hints, codes, matrix, reference, reveal, sorted(unchecked)
+        False,
+        sorted(wrong),
+        hints,
+        codes,
+        matrix,
+        reference,
+        reveal,
+        sorted(unchecked),
+        diagnoses=found.codes,
     )
 
 

@@ -1,21 +1,33 @@
-"""Hints of the homework checker: which candidate mistakes explain the wrong entries, and
-sentences for the entries no candidate explains (sign errors, a missing offset, the rest).
+"""Hints of the homework checker for the entries no candidate mistake explains.
 
-Helpers of :mod:`robotconf.teaching._checker`; the candidates themselves come from
-:mod:`robotconf.teaching._mistakes`.
+Such entries are sorted into groups a sentence can name (rounded too coarsely, a sign
+error on a sine or on the whole entry, a zero in the translation column) and the rest,
+which is named entry by entry. Helpers of :mod:`robotconf.teaching._checker`; the
+candidate mistakes come from :mod:`robotconf.teaching._mistakes` and are ranked by
+:mod:`robotconf.teaching._ranking`.
 """
 
 from __future__ import annotations
 
 from collections.abc import Iterable
+from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
 
 from ._check_result import show_entry, show_expected
-from ._mistakes import Candidate, is_rotation_like
+from ._diagnosis_rounding import coarse_roundings
+from ._mistakes_generic import is_rotation_like
 
-__all__ = ["close", "entries_text", "entry_hints", "explain", "shape_hint", "NO_ANSWER"]
+__all__ = [
+    "EntryGroup",
+    "NO_ANSWER",
+    "close",
+    "entries_text",
+    "entry_groups",
+    "entry_hints",
+    "shape_hint",
+]
 
 #: The hint for an exercise still holding its ``None`` placeholder.
 NO_ANSWER = "No answer yet: replace None with your matrix."
@@ -89,48 +101,6 @@ def shape_hint(student_shape: tuple[int, int], expected: Any, transposed_wrong: 
     return text
 
 
-def explain(
-    candidates: list[Candidate], wrong: set, s_values: np.ndarray, e_values: np.ndarray, tol: float
-) -> tuple[list[Candidate], list[tuple[Candidate, set]]]:
-    """Candidates that explain all wrong entries, and those that explain some of them.
-
-    A full explanation: the student's answer equals the candidate wherever the mistake
-    changes anything, and every wrong entry is such a place. A partial one: the mistake
-    explains at least half of the entries it changes, and none of them is right (a right
-    entry there would contradict the mistake); the rest is another error. (Fewer would
-    be a coincidence of numbers rather than the mistake.)
-
-    Parameters
-    ----------
-    candidates : list of Candidate
-    wrong : set of (int, int)
-    s_values, e_values : ndarray, shape (K, rows, cols)
-        Student's and expected matrix at the sample points.
-    tol : float
-
-    Returns
-    -------
-    full : list of Candidate
-    partial : list of (Candidate, set of (int, int))
-        Best first.
-    """
-    full, partial = [], []
-    for candidate in candidates:
-        if candidate.values.shape != e_values.shape:
-            continue
-        changed = {tuple(x) for x in np.argwhere(~close(candidate.values, e_values, tol))}
-        if not changed:
-            continue
-        matches = {tuple(x) for x in np.argwhere(close(s_values, candidate.values, tol))}
-        explained = wrong & changed & matches
-        if explained == wrong and changed <= matches:
-            full.append(candidate)
-        elif explained and changed <= wrong and 2 * len(explained) >= len(changed):
-            partial.append((candidate, explained))
-    partial.sort(key=lambda item: -len(item[1]))
-    return full, partial
-
-
 def _quote(entries: set, student: Any, expected: Any, reveal: bool) -> list[str]:
     return [
         f"entry {_entry_text(r, c)}: expected {show_expected(expected[r, c])}, you wrote "
@@ -139,6 +109,137 @@ def _quote(entries: set, student: Any, expected: Any, reveal: bool) -> list[str]
         else f"entry {_entry_text(r, c)}"
         for r, c in sorted(entries)
     ]
+
+
+@dataclass(frozen=True)
+class EntryGroup:
+    """Wrong entries one sentence can name.
+
+    Attributes
+    ----------
+    kind : str
+        ``"rounded"``, ``"rotation_sine"``, ``"sine"``, ``"negated"`` or ``"zero_translation"``.
+    code : str
+        The mistake code: ``"coarse_rounding"``, ``"sign_error"`` or ``"missing_offset"``.
+    entries : frozenset of (int, int)
+    tier : int
+        0 for a coarse rounding, 4 for the others (see :mod:`robotconf.teaching._ranking`).
+    """
+
+    kind: str
+    code: str
+    entries: frozenset[tuple[int, int]]
+    tier: int
+
+
+_KINDS = ("rounded", "rotation_sine", "sine", "negated", "zero_translation")
+
+
+def entry_groups(
+    entries: set,
+    student: Any,
+    expected: Any,
+    s_values: np.ndarray,
+    e_values: np.ndarray,
+    tol: float,
+) -> list[EntryGroup]:
+    """Sort wrong entries into the groups a sentence can name, largest group first.
+
+    Parameters
+    ----------
+    entries : set of (int, int)
+    student, expected : sympy.Matrix
+    s_values, e_values : ndarray, shape (K, rows, cols)
+    tol : float
+
+    Returns
+    -------
+    list of EntryGroup
+        Non-empty groups, by size (then rounding first, then the order of ``kind``);
+        entries in none of them are left out.
+
+    Examples
+    --------
+    >>> import sympy
+    >>> q1 = sympy.Symbol("q1", real=True)
+    >>> expected = sympy.Matrix([[sympy.sin(q1), 0.5]])
+    >>> student = sympy.Matrix([[-sympy.sin(q1), sympy.Rational(1, 2) + 1]])
+    >>> e = np.array([[[np.sin(0.3), 0.5]]])
+    >>> s = np.array([[[-np.sin(0.3), 1.5]]])
+    >>> groups = entry_groups({(0, 0), (0, 1)}, student, expected, s, e, 1e-3)
+    >>> [(g.kind, sorted(g.entries)) for g in groups]
+    [('sine', [(0, 0)])]
+    """
+    import sympy
+
+    zeros = np.zeros(e_values.shape[0])
+    rounded = coarse_roundings(student, entries, e_values)
+    negated = {
+        (r, c)
+        for r, c in entries - rounded
+        if close(s_values[:, r, c], -e_values[:, r, c], tol)
+        and not close(e_values[:, r, c], zeros, tol)
+    }
+    homogeneous = is_rotation_like(e_values)
+    sine = {(r, c) for r, c in negated if expected[r, c].has(sympy.sin)}
+    rotation_sine = {(r, c) for r, c in sine if homogeneous and r < 3 and c < 3}
+    rest = entries - negated - rounded
+    zero_translation = {
+        (r, c)
+        for r, c in rest
+        if homogeneous
+        and expected.shape == (4, 4)
+        and c == 3
+        and r < 3
+        and close(s_values[:, r, c], zeros, tol)
+    }
+    found = {
+        "rounded": ("coarse_rounding", rounded),
+        "rotation_sine": ("sign_error", rotation_sine),
+        "sine": ("sign_error", sine - rotation_sine),
+        "negated": ("sign_error", negated - sine),
+        "zero_translation": ("missing_offset", zero_translation),
+    }
+    groups = [
+        EntryGroup(kind, code, frozenset(group), 0 if kind == "rounded" else 4)
+        for kind, (code, group) in found.items()
+        if group
+    ]
+    return sorted(groups, key=lambda g: (-len(g.entries), g.tier, _KINDS.index(g.kind)))
+
+
+def _group_hint(group: EntryGroup, student: Any, expected: Any, reveal: bool) -> str:
+    entries = set(group.entries)
+    if group.kind == "rounded":
+        one = len(entries) == 1
+        where = (
+            "; ".join(_quote(entries, student, expected, True)) + " —"
+            if reveal
+            else f"{'Entry' if one else 'Entries'} {entries_text(entries)} {'is' if one else 'are'}"
+        )
+        return (
+            f"{where} rounded too coarsely: keep at least 4 significant digits (to the "
+            f"digits you kept, {'it is' if one else 'they are'} right)."
+        )
+    if group.kind == "rotation_sine":
+        return (
+            "; ".join(_quote(entries, student, expected, reveal))
+            + " — a sign error on a sine term: the rotation goes the wrong way. A positive "
+            "rotation about x has −sin in (2,3), about y +sin in (1,3), about z −sin in (1,2)."
+        )
+    if group.kind == "sine":
+        return (
+            "; ".join(_quote(entries, student, expected, reveal))
+            + " — a sign error: the whole entry has the opposite sign."
+        )
+    if group.kind == "negated":  # the course's tests read this wording, one entry or more
+        return f"Entries {entries_text(entries)} have the wrong sign."
+    one = len(entries) == 1
+    return (
+        f"{'Entry' if one else 'Entries'} {entries_text(entries)} of the translation column "
+        f"{'is' if one else 'are'} 0 where the answer is not: an offset (a translation) "
+        "seems to be missing."
+    )
 
 
 def entry_hints(
@@ -164,54 +265,16 @@ def entry_hints(
     Returns
     -------
     hints : list of str
+        One per group of :func:`entry_groups` (largest first), then one per remaining
+        entry (at most 8).
     codes : list of str
+        The groups' codes, in the same order.
     """
-    import sympy
-
-    hints, codes = [], []
-    zeros = np.zeros(e_values.shape[0])
-    negated = {
-        (r, c)
-        for r, c in entries
-        if close(s_values[:, r, c], -e_values[:, r, c], tol)
-        and not close(e_values[:, r, c], zeros, tol)
-    }
-    homogeneous = is_rotation_like(e_values)
-    sine = {(r, c) for r, c in negated if expected[r, c].has(sympy.sin)}
-    rotation_sine = {(r, c) for r, c in sine if homogeneous and r < 3 and c < 3}
-    if rotation_sine:
-        codes.append("sign_error")
-        hints.append(
-            "; ".join(_quote(rotation_sine, student, expected, reveal))
-            + " — a sign error on a sine term: the rotation goes the wrong way. A positive "
-            "rotation about x has −sin in (2,3), about y +sin in (1,3), about z −sin in (1,2)."
-        )
-    if sine - rotation_sine:
-        codes.append("sign_error")
-        hints.append(
-            "; ".join(_quote(sine - rotation_sine, student, expected, reveal))
-            + " — a sign error: the whole entry has the opposite sign."
-        )
-    if negated - sine:
-        codes.append("sign_error")
-        hints.append(f"Entries {entries_text(negated - sine)} have the wrong sign.")
-    rest = entries - negated
-    missing = {
-        (r, c)
-        for r, c in rest
-        if homogeneous
-        and expected.shape == (4, 4)
-        and c == 3
-        and r < 3
-        and close(s_values[:, r, c], zeros, tol)
-    }
-    if missing:
-        codes.append("missing_offset")
-        hints.append(
-            f"Entries {entries_text(missing)} of the translation column are 0 where the "
-            "answer is not: an offset (a translation) seems to be missing."
-        )
-    for r, c in sorted(rest - missing)[:8]:
+    groups = entry_groups(entries, student, expected, s_values, e_values, tol)
+    hints = [_group_hint(group, student, expected, reveal) for group in groups]
+    codes = [group.code for group in groups]
+    rest = set(entries).difference(*(group.entries for group in groups))
+    for r, c in sorted(rest)[:8]:
         if reveal:
             hints.append(
                 f"entry {_entry_text(r, c)}: expected {show_expected(expected[r, c])}, "

@@ -1,0 +1,255 @@
+"""Lessons 9 (DH frame assignment) and 10 (the paper's lab): checks, hints, per-student numbers.
+
+Each lesson's exercises draw their numbers from the student id (``rc.Variant``), typed in
+the one cell tagged ``student-id``. The notebooks run a few times each: the solutions as
+committed (id ``"demo"``), the solutions under another id with some answers written
+another right way, the blank exercises, the exercises with typical wrong answers, and the
+exercises under another id with the demo student's numbers (which must fail: the numbers
+follow the id).
+"""
+
+from __future__ import annotations
+
+import ast
+
+import nbformat
+import numpy as np
+import pytest
+
+import robotconf as rc
+
+from .course_support import COURSE, exercise_cells, read_notebook, run_with_answers, solutions_path
+
+DH = "09_dh_frame_assignment"
+LAB = "10_paper_lab"
+LESSONS = (DH, LAB)
+OTHER_ID = "s1234567"
+
+# lesson -> {answer variable: (code of a wrong answer cell, words the hint must contain)}
+WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
+    DH: {
+        # a and d exchanged: the link length read along z
+        "answer_1": ('answer_1 = [("q1", l1, 0, 0), ("q2", 0, l2, 0)]', "look swapped"),
+        # the twist turning z0 onto -y: joint 2 would turn backwards
+        "answer_2": (
+            'answer_2 = [("q1 + pi/2", h, 0, "-pi/2"), ("q2", 0, u, 0), ("q3", 0, f, 0)]',
+            "check the sign of α1",
+        ),
+        # no quarter turn between x1 and x2: the radial slide points along y
+        "answer_3": (
+            'answer_3 = [("q1", 0, 0, 0), (0, f"q2 + {h3}", 0, "pi/2"), (0, f"q3 + {e}", 0, 0)]',
+            "check the constant in θ2",
+        ),
+        # the standard table of exercise 2 where the modified one is asked
+        "answer_4": (
+            'answer_4 = [("q1 + pi/2", h, 0, "pi/2"), ("q2", 0, u, 0), ("q3", 0, f, 0)]',
+            "asks for the modified convention",
+        ),
+    },
+    LAB: {
+        # the calculator fed degrees
+        "answer_1": (
+            "q_deg = np.degrees(q_star)\n"
+            "reach = l2 * np.cos(q_deg[1]) + l3 * np.cos(q_deg[1] + q_deg[2])\n"
+            "answer_1 = [np.cos(q_deg[0]) * reach, np.sin(q_deg[0]) * reach,"
+            " l1 - l2 * np.sin(q_deg[1]) - l3 * np.sin(q_deg[1] + q_deg[2])]",
+            "angles in degrees fed to sin and cos",
+        ),
+        # the mean taken as the midpoint of max and min
+        "answer_2": ("answer_2 = [0, -l3, -l3 / 2]", "not (max + min)/2"),
+        # dp/dq3 without the factor dq3/dt = A/T
+        "answer_3": (
+            "q3_now = A * (t3 % T) / T\nanswer_3 = [-l3 * np.sin(q3_now), 0, -l3 * np.cos(q3_now)]",
+            "You left out dq3/dt",
+        ),
+        # the centripetal term alone, as on the sawtooth's ramps
+        "answer_4": (
+            "w4 = 2 * np.pi * f4\n"
+            "q, qd = B * np.sin(w4 * t4), B * w4 * np.cos(w4 * t4)\n"
+            "answer_4 = l3 * np.array([-np.cos(q), 0, np.sin(q)]) * qd**2",
+            "Only the centripetal term",
+        ),
+        # the central difference where Simulink's backward one is asked
+        "answer_5": (
+            "answer_5 = l3 * (np.cos(A * 1e-3 / T) - np.cos(A * (T - 1e-3) / T)) / 2e-3",
+            "That is the central difference",
+        ),
+    },
+}
+
+# Right answers written another way, run under OTHER_ID (the others keep the solution's code).
+OTHER_RIGHT_ANSWERS: dict[str, dict[str, str]] = {
+    DH: {
+        "answer_1": 'answer_1 = f"[[q1, 0, {l1}, 0], [q2, 0, {l2}, 0]]"',  # text
+        # x1 = -y instead of +y: θ1 a quarter turn the other way, the twist -π/2, θ2 + π
+        "answer_2": (
+            'answer_2 = [("q1 - pi/2", h, 0, "-pi/2"), ("q2 + pi", 0, u, 0), ("q3", 0, f, 0)]'
+        ),
+        # the slide height in row 1 (z0 and z1 are one line), θ2 = -π/2 with α2 = -π/2
+        "answer_3": (
+            'answer_3 = [("q1", h3, 0, 0), ("-pi/2", "q2", 0, "-pi/2"), (0, f"q3 + {e}", 0, 0)]'
+        ),
+        "answer_4": 'answer_4 = [("q1 + pi/2", h, 0, 0), ("q2", 0, 0, 1.5708), ("q3", 0, u, 0)]',
+    },
+    LAB: {
+        "answer_1": (  # text with three decimals
+            "reach = l2 * np.cos(q_star[1]) + l3 * np.cos(q_star[1] + q_star[2])\n"
+            "p = [np.cos(q_star[0]) * reach, np.sin(q_star[0]) * reach,"
+            " l1 - l2 * np.sin(q_star[1]) - l3 * np.sin(q_star[1] + q_star[2])]\n"
+            'answer_1 = "[" + ", ".join(f"{x:.3f}" for x in p) + "]"'
+        ),
+        "answer_2": 'answer_2 = f"[0, {-l3}, {-l3 * (1 - np.cos(A)) / A:.3f}]"',  # text, rounded
+    },
+}
+
+
+def _exercises(lesson: str):
+    return COURSE / lesson / "exercises.ipynb"
+
+
+def _with_student(path, student_id: str, folder) -> object:
+    """A copy of the notebook whose student-id cell holds ``student_id``."""
+    notebook = read_notebook(path)
+    (cell,) = [c for c in notebook.cells if "student-id" in c.metadata.get("tags", [])]
+    cell.source = f"student_id = {student_id!r}"
+    copy = folder / f"{path.parent.name}-{student_id}.ipynb"
+    nbformat.write(notebook, str(copy))
+    return copy
+
+
+def _numbers_of(lesson: str, student: str = "demo") -> dict[str, str]:
+    """A student's right answers as plain numbers (what a copied notebook would hold)."""
+    v = rc.Variant(student, lesson)
+    if lesson == DH:
+        l1, l2 = v.length("l1", 20, 60, step=5), v.length("l2", 15, 45, step=5)
+        h = v.length("h", 15, 40, step=5)
+        u, f = v.length("u", 20, 50, step=5), v.length("f", 20, 50, step=5)
+        return {
+            "answer_1": f'answer_1 = [("q1", 0, {l1}, 0), ("q2", 0, {l2}, 0)]',
+            "answer_2": (
+                f'answer_2 = [("q1 + pi/2", {h}, 0, "pi/2"), ("q2", 0, {u}, 0), ("q3", 0, {f}, 0)]'
+            ),
+        }
+    l1, l2 = v.length("l1", 15, 30, step=5), v.length("l2", 20, 40, step=5)
+    l3, a = v.length("l3", 30, 50, step=5), v.length("A", 1.7, 2.5, step=0.1)
+    choices = ((1, [30, 45, 60, 90, 120]), (2, [-45, -30, 30, 45, 60]), (3, [30, 45, 60, 90]))
+    q = [v.angle(f"q{i}*", c) for i, c in choices]
+    reach = l2 * np.cos(q[1]) + l3 * np.cos(q[1] + q[2])
+    z = l1 - l2 * np.sin(q[1]) - l3 * np.sin(q[1] + q[2])
+    p = [np.cos(q[0]) * reach, np.sin(q[0]) * reach, z]
+    return {
+        "answer_1": f"answer_1 = {[round(float(x), 4) for x in p]}",
+        "answer_2": f"answer_2 = [0, {-l3}, {round(-l3 * (1 - np.cos(a)) / a, 4)}]",
+    }
+
+
+@pytest.fixture(scope="module")
+def runs(tmp_path_factory):
+    """Each notebook run once, on first use: ``runs(kind, lesson)`` → errors by variable."""
+    folder = tmp_path_factory.mktemp("lessons_9_10")
+    done: dict[tuple[str, str], dict[str, str]] = {}
+
+    def run(kind: str, lesson: str) -> dict[str, str]:
+        if (kind, lesson) not in done:
+            exercises = _exercises(lesson)
+            if kind == "solutions":
+                result = run_with_answers(solutions_path(exercises))
+            elif kind == "solutions, other id":
+                copy = _with_student(solutions_path(exercises), OTHER_ID, folder)
+                result = run_with_answers(copy, OTHER_RIGHT_ANSWERS[lesson])
+            elif kind == "blank":
+                result = run_with_answers(exercises)
+            elif kind == "wrong":
+                answers = {v: code for v, (code, _) in WRONG_ANSWERS[lesson].items()}
+                result = run_with_answers(exercises, answers)
+            else:  # "demo numbers, other id"
+                copy = _with_student(exercises, OTHER_ID, folder)
+                result = run_with_answers(copy, _numbers_of(lesson))
+            done[(kind, lesson)] = result
+        return done[(kind, lesson)]
+
+    return run
+
+
+@pytest.mark.parametrize("lesson", LESSONS)
+def test_exercises_and_solutions_match(lesson):
+    exercises = exercise_cells(_exercises(lesson))
+    solutions = exercise_cells(solutions_path(_exercises(lesson)))
+    assert 4 <= len(exercises) <= 5
+    assert sorted(WRONG_ANSWERS[lesson]) == [e.variable for e in exercises]
+    for exercise, solution in zip(exercises, solutions, strict=True):
+        assert exercise.check_source == solution.check_source, exercise.variable
+        assert exercise.answer_source != solution.answer_source, exercise.variable
+
+
+NOTEBOOKS = [_exercises(n) for n in LESSONS] + [solutions_path(_exercises(n)) for n in LESSONS]
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: f"{p.parent.parent.name}/{p.parent.name}")
+def test_one_student_id_cell_feeds_every_variant(path):
+    """The contract the answer-key exporter relies on."""
+    cells = read_notebook(path).cells
+    tagged = [c for c in cells if "student-id" in c.metadata.get("tags", [])]
+    assert len(tagged) == 1
+    (statement,) = ast.parse(tagged[0].source).body
+    assert isinstance(statement, ast.Assign) and statement.targets[0].id == "student_id"
+    assert statement.value.value == "demo"
+    code = "\n".join(c.source for c in cells if c.cell_type == "code")
+    lesson = path.parent.name
+    assert f'rc.Variant(student_id, "{lesson}")' in code
+    assert code.index("student_id =") < code.index("rc.Variant(")
+
+
+@pytest.mark.parametrize("lesson", LESSONS)
+def test_solutions_pass(runs, lesson):
+    errors = runs("solutions", lesson)
+    assert len(errors) == len(WRONG_ANSWERS[lesson])
+    assert not any(errors.values()), errors
+
+
+@pytest.mark.parametrize("lesson", LESSONS)
+def test_another_student_passes_with_their_own_right_answers(runs, lesson):
+    errors = runs("solutions, other id", lesson)
+    assert len(errors) == len(WRONG_ANSWERS[lesson])
+    assert not any(errors.values()), errors
+
+
+@pytest.mark.parametrize("lesson", LESSONS)
+def test_the_demo_students_numbers_fail_for_another_student(runs, lesson):
+    demo, other = _numbers_of(lesson), _numbers_of(lesson, OTHER_ID)
+    assert all(demo[variable] != other[variable] for variable in demo), (demo, other)
+    errors = runs("demo numbers, other id", lesson)
+    for variable in demo:
+        assert "AssertionError" in errors[variable], errors[variable]
+        assert "not answered yet" not in errors[variable]
+
+
+@pytest.mark.parametrize("lesson", LESSONS)
+def test_blank_exercises_fail_kindly(runs, lesson):
+    errors = runs("blank", lesson)
+    assert len(errors) == len(WRONG_ANSWERS[lesson])
+    for variable, error in errors.items():
+        number = variable.split("_")[1]
+        assert f"AssertionError: Exercise {number} is not answered yet" in error, error
+
+
+@pytest.mark.parametrize(
+    ("lesson", "variable"), [(n, v) for n in LESSONS for v in WRONG_ANSWERS[n]]
+)
+def test_typical_wrong_answer_gets_the_right_hint(runs, lesson, variable):
+    error = runs("wrong", lesson)[variable]
+    _, words = WRONG_ANSWERS[lesson][variable]
+    assert "AssertionError" in error, error
+    assert words in error, error
+
+
+def test_lab_numbers_by_hand_match_the_paper_case():
+    """The lab's formulas, at the paper's own numbers (l = 20, 30, 40; A = T = 2)."""
+    robot = rc.preset("paper")
+    saw = rc.signals.RepeatingSequence(times=[0, 2], values=[0, 2])
+    lab = rc.simulate(robot, {"q3": saw}, t_end=6.0, dt=1e-4)
+    z = lab.stats().loc[("EE", "displacement", "z")]
+    assert z["max"] == 0 and np.isclose(z["min"], -40, atol=1e-6)
+    assert np.isclose(z["mean"], -40 * (1 - np.cos(2)) / 2, rtol=1e-3)  # -28.32 mm
+    backward = rc.simulate(robot, {"q3": saw}, t_end=4.0, dt=1e-3, method="backward")
+    assert np.isclose(backward.velocity[2000, 3, 0], 40 * (1 - np.cos(2 * 1.999 / 2)) / 1e-3)
