@@ -4,7 +4,9 @@ above it, pinned to the top of the notebook's scrolling area, when there is not.
 Either way the robot stays in sight while its sliders move. The row wraps (CSS flexbox)
 at about 960 px: JupyterLab at 1280 px with its file browser open leaves ~850 px to an
 output, so there the view sits above the editor and sticks (``position: sticky``) while
-the editor scrolls under it.
+the editor scrolls under it. Pinned, the 3D pane is at most 36 % of the window high
+(a CSS container query on the row's width: the row wraps exactly when it is narrower than
+editor and view together), so the sliders under it stay in sight too.
 
 ``position: sticky`` pins an element inside its nearest scrolling ancestor, and every box
 with ``overflow`` other than ``visible`` counts as one: ipywidgets' boxes and JupyterLab's
@@ -30,6 +32,9 @@ PANEL_CLASS, VIEW_CLASS = "robotconf-panel", "robotconf-view"
 WORKSPACE_CLASS = "robotconf-workspace"
 #: Widths (px) at which the editor and the view start to share a row.
 EDITOR_WIDTH, VIEW_WIDTH = 560, 400
+#: The 3D pane's height while it is pinned above the editor: the scene's own height, but
+#: at most about a third of the window, so the sliders under it keep room to be seen.
+PINNED_MAX_HEIGHT = "max(36vh, 220px)"
 
 #: The panel's stylesheet. ``:has`` limits the output-area rules to outputs that hold a
 #: panel (JupyterLab and Voilà both use these classes; elsewhere the rules match nothing
@@ -43,6 +48,10 @@ STYLE = f"""
 .{VIEW_CLASS} {{
   position: sticky; top: 0; z-index: 20; align-self: flex-start;
   background: var(--jp-layout-color0, #fff);
+}}
+.{WORKSPACE_CLASS} {{ container-type: inline-size; }}
+@container (max-width: {EDITOR_WIDTH + VIEW_WIDTH - 0.02}px) {{
+  .{VIEW_CLASS} .robotconf-scene {{ max-height: {PINNED_MAX_HEIGHT}; }}
 }}
 """
 

@@ -249,7 +249,8 @@ function rcCreateViewer(MeshCat, element, height, onFrame) {
   // and a kinematics picture needs no shadows.
   viewer.renderer.shadowMap.enabled = false;
   let disposed = false;
-  const sizeOf = () => [Math.max(element.clientWidth, 100), height || element.clientHeight || 400];
+  // The page may give the pane another height than asked for (a pinned view is shorter).
+  const sizeOf = () => [Math.max(element.clientWidth, 100), element.clientHeight || height || 400];
   const setSize = viewer.set_3d_pane_size.bind(viewer);
   viewer.set_3d_pane_size = (w, h) => {
     if (disposed) return;
