@@ -24,6 +24,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, NoReturn
 
 from ._budget import check_memory
+from .grading import add_course_parser, run_course
 from .motion import METHODS, QUANTITIES, SimulationSettings
 from .signals import SPEC_HELP, parse_signal_spec
 
@@ -139,6 +140,7 @@ def _parser() -> argparse.ArgumentParser:
     )
     report.add_argument("--no-scene", action="store_true", help="skip scene.html")
     report.add_argument("--quiet", action="store_true", help="no progress lines")
+    add_course_parser(commands)
     return parser
 
 
@@ -582,7 +584,7 @@ def main(argv: Sequence[str] | None = None) -> int:
         with warnings.catch_warnings():
             warnings.simplefilter("ignore")
             args = _parser().parse_args(argv)
-            return _report(args)
+            return run_course(args) if args.command == "course" else _report(args)
     except SystemExit as done:  # --help
         return done.code if isinstance(done.code, int) else 0
     except KeyboardInterrupt:

@@ -1,0 +1,68 @@
+"""Grading: the course as nbgrader assignments, partial credit, and the answer key.
+
+Instructor tooling beside the command line (``robotconf course release`` and
+``robotconf course key``); docs/grading.md walks through it. Notebooks are read and
+written as nbformat-4 JSON; running them needs nbclient and ipykernel (the ``lab``
+extra), imported only when a notebook runs.
+
+In a graded notebook
+    :class:`Credit` (a test cell's points: full, partial per entry, or none)
+Points and partial credit
+    :func:`points_for`, :func:`answer_credit`, :func:`credit_counts`,
+    :func:`graded_entries`
+Release for nbgrader
+    :func:`release_course`, :class:`Release`, :class:`ReleasedExercise`,
+    :func:`source_notebook`
+Running the solutions
+    :func:`run_solutions`, :class:`SolutionsRun`, :class:`ExerciseRun`
+The answer key
+    :func:`answer_key`, :func:`write_answer_key`, :class:`AnswerKey`, :class:`KeyLesson`,
+    :class:`KeyExercise`
+Exercises by their tags
+    :func:`find_exercises`, :class:`Exercise`, :func:`read_notebook`
+The command line
+    :func:`add_course_parser`, :func:`run_course`
+
+>>> points_for("matrix", (4, 4))
+2
+"""
+
+from ._answer_key import AnswerKey, KeyExercise, KeyLesson, answer_key, write_answer_key
+from ._command import add_course_parser, run_course
+from ._credit import Credit
+from ._execute import ExerciseRun, SolutionsRun, run_solutions
+from ._notebook_cells import Exercise, find_exercises, read_notebook
+from ._points import answer_credit, credit_counts, graded_entries, points_for
+from ._release import Release, ReleasedExercise, release_course, source_notebook
+
+__all__ = [
+    # in a graded notebook
+    "Credit",
+    # points and partial credit
+    "points_for",
+    "answer_credit",
+    "credit_counts",
+    "graded_entries",
+    # release for nbgrader
+    "release_course",
+    "Release",
+    "ReleasedExercise",
+    "source_notebook",
+    # running the solutions
+    "run_solutions",
+    "SolutionsRun",
+    "ExerciseRun",
+    # the answer key
+    "answer_key",
+    "write_answer_key",
+    "AnswerKey",
+    "KeyLesson",
+    "KeyExercise",
+    # exercises by their tags
+    "find_exercises",
+    "Exercise",
+    "read_notebook",
+    # the command line
+    "add_course_parser",
+    "run_course",
+]

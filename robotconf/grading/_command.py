@@ -1,0 +1,124 @@
+"""``robotconf course …``: the instructor's commands (release for nbgrader, answer key).
+
+``cli.py`` registers the subcommand with :func:`add_course_parser` and hands the parsed
+arguments to :func:`run_course`; errors are ``InvalidInputError`` (a ``ValueError``) or
+``OSError``, which ``cli.main`` prints as one line with exit status 2.
+"""
+
+from __future__ import annotations
+
+import argparse
+from collections.abc import Callable
+from typing import Any
+
+from ._execute import CELL_TIMEOUT
+
+__all__ = ["add_course_parser", "run_course"]
+
+_RELEASE = """\
+Write the course as an nbgrader course folder: OUT/source/<lesson>/<lesson>.ipynb (one
+assignment per lesson, from the solutions notebooks, with solution markers, points,
+partial credit and hidden tests), OUT/nbgrader_config.py and OUT/README.md. The
+solutions run first and must pass their own checks. OUT/source holds the solutions: it
+is the instructor's copy; `nbgrader generate_assignment` makes the students' copies."""
+
+_KEY = """\
+Write the answer key (every exercise's expected value, formulas also as LaTeX) as
+Markdown (.md) or JSON (.json), by running the solutions notebooks. Lessons with
+per-student numbers (a cell tagged student-id) run with --student's id."""
+
+
+def _common(parser: argparse.ArgumentParser) -> None:
+    parser.add_argument(
+        "--course", metavar="COURSE_DIR", help="the course folder (default: ./course)"
+    )
+    parser.add_argument(
+        "--lessons", metavar="LIST", help="lessons by number or name, e.g. 01,03 (default: all)"
+    )
+    parser.add_argument(
+        "--timeout",
+        type=int,
+        default=CELL_TIMEOUT,
+        metavar="SECONDS",
+        help=f"time limit per notebook cell (default {CELL_TIMEOUT})",
+    )
+    parser.add_argument("--quiet", action="store_true", help="no progress lines")
+
+
+def add_course_parser(commands: Any) -> None:
+    """Add ``course release`` and ``course key`` to the ``robotconf`` command.
+
+    Parameters
+    ----------
+    commands : argparse subparsers action
+        What ``ArgumentParser.add_subparsers`` returned for ``robotconf``.
+
+    Examples
+    --------
+    >>> parser = argparse.ArgumentParser(prog="robotconf")
+    >>> add_course_parser(parser.add_subparsers(dest="command"))
+    >>> args = parser.parse_args(["course", "key", "key.md", "--student", "s1"])
+    >>> args.course_command, args.out, args.student, args.timeout
+    ('key', 'key.md', 's1', 120)
+    """
+    course = commands.add_parser(
+        "course",
+        help="instructor tools: the course for nbgrader, the answer key",
+        description="Instructor tools for the course: an nbgrader release and the answer key.",
+    )
+    actions = course.add_subparsers(dest="course_command", required=True, metavar="ACTION")
+    release = actions.add_parser(
+        "release", help="write an nbgrader course folder", description=_RELEASE
+    )
+    release.add_argument("out", metavar="OUT/", help="the nbgrader course folder (created)")
+    release.add_argument(
+        "--course-id", default="robotconf", help="nbgrader's course id (default robotconf)"
+    )
+    _common(release)
+    key = actions.add_parser("key", help="write the answer key", description=_KEY)
+    key.add_argument("out", metavar="OUT.md|OUT.json", help="the key file")
+    key.add_argument("--student", metavar="ID", help="a student id, for per-student lessons")
+    _common(key)
+
+
+def run_course(args: argparse.Namespace, say: Callable[[str], None] = print) -> int:
+    """Run ``robotconf course release|key`` with parsed arguments; returns 0.
+
+    Raises
+    ------
+    InvalidInputError
+        For bad options, notebooks or solutions (``cli.main`` prints it on one line).
+    """
+    from ._answer_key import answer_key, key_path, write_answer_key
+    from ._release import release_course
+
+    if args.timeout < 1:
+        from .._errors import InvalidInputError
+
+        raise InvalidInputError("--timeout", args.timeout, "a whole number of seconds ≥ 1")
+    progress = (lambda _: None) if args.quiet else say
+    if args.course_command == "release":
+        release = release_course(
+            args.out,
+            args.course,
+            args.lessons,
+            course_id=args.course_id,
+            timeout=args.timeout,
+            say=progress,
+        )
+        total = sum(e.points for e in release.exercises)
+        for note in release.notes:
+            progress(f"note: {note}")
+        progress(
+            f"wrote {release.out}: {len(release.assignments)} assignments, {total} points "
+            "(source/ holds the solutions: instructor only; see README.md there)"
+        )
+        return 0
+    key_path(args.out)  # before the notebooks run
+    key = answer_key(
+        args.course, args.lessons, student=args.student, timeout=args.timeout, say=progress
+    )
+    path = write_answer_key(args.out, key)
+    count = sum(len(lesson.exercises) for lesson in key.lessons)
+    progress(f"wrote {path}: {len(key.lessons)} lessons, {count} exercises")
+    return 0
