@@ -36,7 +36,12 @@ import numpy as np
 
 sys.path.insert(0, str(Path(__file__).resolve().parents[1]))
 
-from tests.browser.lab_driver import open_notebook, run_cell, write_notebook  # noqa: E402
+from tests.browser.lab_driver import (  # noqa: E402
+    open_notebook,
+    quiet_lab_config,
+    run_cell,
+    write_notebook,
+)
 
 CHROMIUM = os.environ.get("ROBOTCONF_CHROMIUM", "/usr/bin/chromium")
 CHROMIUM_ARGS = [
@@ -151,6 +156,7 @@ def start_lab(root: Path) -> tuple[subprocess.Popen, str]:
         JUPYTERLAB_WORKSPACES_DIR=str(root / ".lab-workspaces"),
         PYTHONPATH=str(Path(__file__).resolve().parents[1]),
     )
+    quiet_lab_config(root / ".jupyter-config")
     process = subprocess.Popen(
         [
             sys.executable,

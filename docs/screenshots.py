@@ -31,7 +31,7 @@ from typing import Any
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the browser tests' helpers drive the same workflow
 
-from tests.browser.lab_driver import open_notebook, write_notebook  # noqa: E402
+from tests.browser.lab_driver import open_notebook, quiet_lab_config, write_notebook  # noqa: E402
 from tests.browser.paper_workflow import (  # noqa: E402
     PANEL_CELL,
     SCROLL_JS,
@@ -66,6 +66,7 @@ def jupyter_lab(root: Path) -> Iterator[str]:
         JUPYTERLAB_WORKSPACES_DIR=str(root / ".lab-workspaces"),
         MPLBACKEND="Agg",
     )
+    quiet_lab_config(root / ".jupyter-config")
     command = [
         sys.executable,
         "-m",

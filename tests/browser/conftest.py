@@ -20,6 +20,8 @@ from pathlib import Path
 import psutil
 import pytest
 
+from .lab_driver import quiet_lab_config
+
 CHROMIUM = os.environ.get("ROBOTCONF_CHROMIUM", "/usr/bin/chromium")
 CHROMIUM_ARGS = [
     "--no-sandbox",
@@ -94,6 +96,7 @@ def lab(tmp_path_factory: pytest.TempPathFactory, spawned: list[psutil.Process])
         JUPYTERLAB_WORKSPACES_DIR=str(root / ".lab-workspaces"),
         MPLBACKEND="Agg",
     )
+    quiet_lab_config(root / ".jupyter-config")
     log = open(root / "lab.log", "wb")  # noqa: SIM115 - the server writes it until the end
     process = subprocess.Popen(
         [

@@ -2,10 +2,29 @@
 
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import nbformat
 import numpy as np
+
+#: Front-end parts a student's JupyterLab does not show: nbgrader's menus (nbgrader comes
+#: with the developer extra, for the grading tests) and the news prompt that pops up over
+#: the page's corner.
+QUIET_LAB = {
+    "disabledExtensions": {
+        "@jupyter/nbgrader": True,
+        "@jupyterlab/apputils-extension:announcements": True,
+    }
+}
+
+
+def quiet_lab_config(config_dir: Path) -> None:
+    """Write the page config that hides :data:`QUIET_LAB`'s parts into a Jupyter config dir."""
+    labconfig = Path(config_dir) / "labconfig"
+    labconfig.mkdir(parents=True, exist_ok=True)
+    (labconfig / "page_config.json").write_text(json.dumps(QUIET_LAB), "utf-8")
+
 
 #: The notebook in the visible tab (another tab's cells may be in the page, hidden).
 NOTEBOOK = ".jp-NotebookPanel:not(.lm-mod-hidden) .jp-Notebook"
