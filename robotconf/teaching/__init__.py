@@ -19,6 +19,9 @@ Answers that are not matrices (same parser and numeric judge, 0.1 % tolerance)
     :func:`check_interval`, their ``assert_*`` forms (:func:`assert_value`,
     :func:`assert_vector`, :func:`assert_angle`, :func:`assert_set`,
     :func:`assert_interval`) and :class:`AnswerCheck`.
+Inverse-kinematics answers (judged by forward kinematics: any solution passes)
+    :func:`check_ik_solution`, :func:`check_ik_solutions`, :func:`assert_ik_solution`,
+    :func:`assert_ik_solutions`, :class:`IKCheck`
 DH tables (judged by the robot they describe: joint axes and end-effector at seeded q)
     :func:`check_dh_table`, :func:`assert_dh_table`, :class:`DHTableCheck`,
     :func:`parse_dh_rows`
@@ -49,6 +52,9 @@ from ._dh_table_check import DHTableCheck, assert_dh_table, check_dh_table
 from ._dh_table_text import parse_dh_rows
 from ._expected import ExpectedMatrix, as_expected, evaluate, expected_matrix, sample_points
 from ._formatting import format_number, latex_text, matrix_grid, matrix_latex
+from ._ik_answers import assert_ik_solution, check_ik_solution
+from ._ik_answers_result import IK_DIAGNOSES, IKCheck
+from ._ik_answers_sets import assert_ik_solutions, check_ik_solutions
 from ._mistakes import ROTATION_PATTERN, Candidate, generic_candidates, is_rotation_like
 from ._step import DerivationStep
 from ._student_parser import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
@@ -109,6 +115,13 @@ __all__ = [
     "generic_candidates",
     "is_rotation_like",
     "ROTATION_PATTERN",
+    # inverse-kinematics answers
+    "check_ik_solution",
+    "check_ik_solutions",
+    "assert_ik_solution",
+    "assert_ik_solutions",
+    "IKCheck",
+    "IK_DIAGNOSES",
     # DH tables
     "check_dh_table",
     "assert_dh_table",
