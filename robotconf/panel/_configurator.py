@@ -36,6 +36,8 @@ from ._module_list import ModuleList
 from ._motion_section import MotionSection
 from ._preset_menu import PresetMenu
 from ._ranges import joint_limits, length_scale
+from ._reach_moves import show_coordinates
+from ._reach_tab import ReachTab
 from ._robot_extras import RobotExtras
 from ._scene_slot import default_scene_factory
 from ._setup_io import setup_from, setup_to_json
@@ -48,7 +50,7 @@ __all__ = ["Configurator", "configurator"]
 _MODES = (("Modules", "modules"), ("DH table", "dh"), ("Guided", "wizard"))
 #: The result tabs under the editor and the 3D view (the view is no tab: it stays in
 #: sight). Motion first: the matrices' symbolic view is computed only while it shows.
-_MOTION_TAB, _MATRICES_TAB, _FILES_TAB = range(3)
+_MOTION_TAB, _MATRICES_TAB, _REACH_TAB, _FILES_TAB = range(4)
 
 
 def _default_robot() -> Robot:
@@ -125,6 +127,8 @@ class Configurator:
     view : ipywidgets.VBox
         The end-effector line and the 3D scene: beside the editor, or above it and
         pinned while the editor scrolls (``robotconf/panel/_layout.py``).
+    reach : ReachTab
+        The Reach tab: a target the robot follows by inverse kinematics.
     errors : dict
         Control key → message of every input the core refused right now.
 
@@ -228,9 +232,18 @@ class Configurator:
         self.ee_label.add_class("robotconf-ee")
         factory = scene_factory or default_scene_factory(scene_height)
         self.scene = factory(robot)
+        # Inverse kinematics: moves the robot like an edit of its q (see _reach_to).
+        self.reach = ReachTab(
+            lambda: self._robot, self._reach_to, self.history, self.scene, self.units
+        )
         self.results = widgets.Tab(
-            children=[self.motion_section.widget, self.matrices.widget, self.files.widget],
-            titles=("Motion", "Matrices", "Save / Load"),
+            children=[
+                self.motion_section.widget,
+                self.matrices.widget,
+                self.reach.widget,
+                self.files.widget,
+            ],
+            titles=("Motion", "Matrices", "Reach", "Save / Load"),
         )
         self._editor_box = widgets.VBox()
         self.view = view_column([self.ee_label, self.scene.widget])
@@ -458,6 +471,7 @@ class Configurator:
             self.motion_section.mark_stale(robot)
         self.matrices.show(robot)
         self.exports.show(robot)
+        self.reach.show(robot)
         self._show_end_effector()
         if record:
             self.history.record(robot, coalesce, None if order is None else list(order))
@@ -500,6 +514,7 @@ class Configurator:
     def _units_changed(self) -> None:
         """Every view in the units now chosen; the robot and the signals stay as they are."""
         self.motion_section.set_units(self.units)
+        self.reach.set_units(self.units)
         self._show_end_effector()
 
     def _show_end_effector(self) -> None:
@@ -508,6 +523,12 @@ class Configurator:
             f"<b>End-effector</b> <code>{html.escape(end_effector_text(self._robot))}</code> "
             f"<small>[{html.escape(unit)}]</small>"
         )
+
+    def _reach_to(self, robot: Robot) -> None:
+        """The Reach tab moved the robot: the q controls show it and every view follows;
+        the tab records the undo step itself (one per drag)."""
+        show_coordinates((self.modules, self.dh), robot.q)
+        self._accept(robot, record=False)
 
     def _wizard_finished(self, robot: Robot) -> None:
         self._load_robot(robot)
@@ -529,6 +550,7 @@ class Configurator:
     def _tab_changed(self, change: dict[str, Any]) -> None:
         self.matrices.set_visible(change["new"] == _MATRICES_TAB)
         self.files.set_visible(change["new"] == _FILES_TAB)
+        self.reach.set_visible(change["new"] == _REACH_TAB)
 
     def _animate(self, motion: Motion) -> None:
         animate = getattr(self.scene, "animate", None)
@@ -549,6 +571,7 @@ class Configurator:
         yield from self.wizard.error_items()
         yield from self.motion_section.error_items()
         yield from self.files.error_items()
+        yield from self.reach.error_items()
         yield from self.binding.error_items()
 
 

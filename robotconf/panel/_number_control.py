@@ -246,6 +246,15 @@ class NumberControl:
     def _slider_changed(self, change: dict[str, Any]) -> None:
         self.drag_to(change["new"])
 
+    def notch(self, shown: float) -> float:
+        """The slider notch nearest ``shown`` (display units), within the slider's range.
+
+        >>> NumberControl("q", 0.0, -180, 180, angle=True).notch(34.377)
+        34.0
+        """
+        step, slider = self.step, self.slider
+        return min(max(display_number(round(shown / step) * step, step), slider.min), slider.max)
+
     def drag_to(self, shown: float) -> None:
         """Take a slider position the user dragged to (display units), as a move of the
         slider: the box follows and ``on_change`` runs. The page's slider already shows it.
@@ -263,8 +272,21 @@ class NumberControl:
         >>> control.drag_to(720.0)  # outside the slider: ignored
         >>> control.box.value
         30.0
+        >>> control.box.value = 34.4  # typed between two notches
+        >>> control.drag_to(34.0)  # the page's slider sends its notch back: not a move
+        >>> control.box.value
+        34.4
+        >>> control.drag_to(35.0)  # a move to another notch
+        >>> control.box.value
+        35.0
         """
         if self._quiet or not self.slider.min <= shown <= self.slider.max:
+            return
+        value = self.value
+        if math.isfinite(value) and value != self.notch(value) == self.notch(shown):
+            # A value set between two notches (34.4°, a solved pose) reaches the page's
+            # slider, which snaps it and sends the notch back as if dragged there: the
+            # robot would move by up to half a step with no one touching it.
             return
         shown = snap_to_step(shown, self.step)
         if shown == self.value:

@@ -31,6 +31,7 @@ from ._commands import (
 )
 from ._drawing import RobotDrawing, robot_size, structure_key
 from ._fit import view_sphere
+from ._ghosts import Ghosts
 from ._labels import check_label_mode, label_digits, label_rows, merge_coincident
 from ._playback import _ANIMATION_KEYS, ROBOT, Playback
 from ._shown import Shown
@@ -46,8 +47,11 @@ RESIZE_FACTOR = 2.0
 LABEL_SPACING = 0.25
 
 
-class Scene(Playback):
+class Scene(Ghosts, Playback):
     """A robot drawn in meshcat's three.js viewer inside the notebook.
+
+    Inverse kinematics draws beside it: :meth:`show_ghosts` (faint copies at other
+    coordinates) and :meth:`show_target` (a target marker), see ``_ghosts.py``.
 
     Parameters
     ----------
