@@ -2,9 +2,10 @@
 
 ``import robotconf as rc`` gives the names a notebook needs, grouped by concept below. Each
 lives in a folder of its own (docs/architecture.md): :mod:`robotconf.kinematics`,
-:mod:`robotconf.signals`, :mod:`robotconf.motion`, :mod:`robotconf.teaching`,
-:mod:`robotconf.io`, :mod:`robotconf.presets`, :mod:`robotconf.plots`, and the
-presentation layers :mod:`robotconf.scene` and :mod:`robotconf.panel`. Importing the
+:mod:`robotconf.signals`, :mod:`robotconf.motion`, :mod:`robotconf.programs`,
+:mod:`robotconf.teaching`, :mod:`robotconf.io`, :mod:`robotconf.presets`,
+:mod:`robotconf.plots`, and the presentation layers :mod:`robotconf.scene`,
+:mod:`robotconf.panel` and :mod:`robotconf.grading`. Importing the
 package loads numpy only; tables, plots, symbolic algebra, the 3D view and the panel
 import their libraries when they are used.
 
@@ -53,6 +54,16 @@ from .kinematics import (
 from .motion import Motion, SimulationSettings, compare_motions, simulate
 from .plots import plot_coordinates, plot_motion, plot_robot, plot_workspace
 from .presets import preset, preset_names
+from .programs import (
+    CIRC,
+    LIN,
+    PTP,
+    Program,
+    ProgramMotion,
+    ProgramReport,
+    Violation,
+    Wait,
+)
 from .teaching import (
     AnswerCheck,
     Derivation,
@@ -148,6 +159,15 @@ __all__ = [
     "assert_dh_table",
     "DHTableCheck",
     "Variant",
+    # robot programs
+    "Program",
+    "PTP",
+    "LIN",
+    "CIRC",
+    "Wait",
+    "ProgramMotion",
+    "ProgramReport",
+    "Violation",
     # files and presets
     "load",
     "load_setup",

@@ -29,7 +29,7 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("_base",),
     ("kinematics", "signals"),
     ("motion", "ik"),
-    ("io", "teaching", "presets"),
+    ("io", "teaching", "presets", "programs"),
     ("plots",),
     ("scene",),
     ("panel", "cli", "grading"),

@@ -20,6 +20,7 @@ from typing import TYPE_CHECKING, Any
 from .._errors import InvalidInputError
 from .._validation import Rejected, check_json_object, one_line
 from ..motion import SimulationSettings
+from ..programs import Program
 from ..signals import Constant, Signal, signal_from_dict
 from ._schema import (
     FORMAT,
@@ -42,7 +43,14 @@ MAX_BYTES = 1_000_000
 # inside JSON strings, so this cannot touch a name.
 _NUMBER_LIST = re.compile(r"\[\n\s+(-?[\d.eE+-]+(?:,\n\s+-?[\d.eE+-]+)*)\n\s*\]")
 
-_TOP_KEYS = {"format": True, "version": True, "robot": True, "signals": False, "simulation": False}
+_TOP_KEYS = {
+    "format": True,
+    "version": True,
+    "robot": True,
+    "signals": False,
+    "simulation": False,
+    "program": False,
+}
 
 
 def _pairs(pairs: list[tuple[str, Any]]) -> JSONObject:
@@ -152,6 +160,8 @@ class Setup:
         :class:`~robotconf.motion.SimulationSettings`. Kept as a dict of the keys given
         (all four for a SimulationSettings), so a file is written back as it was read;
         keys left out take the defaults. :attr:`settings` gives the settings object.
+    program : Program, optional
+        A robot program (PTP/LIN/CIRC/Wait moves, docs/programs.md) for this robot.
 
     Examples
     --------
@@ -168,12 +178,19 @@ class Setup:
     robot: Robot
     signals: Mapping[str, Signal] = field(default_factory=dict)
     simulation: Mapping[str, Any] | SimulationSettings | None = None
+    program: Program | None = None
 
     def __post_init__(self) -> None:
         from ..kinematics import Robot  # local: _robot imports this module
 
         if not isinstance(self.robot, Robot):
             raise InvalidInputError("robot", self.robot, "a Robot")
+        if self.program is not None and (
+            not isinstance(self.program, Program) or self.program.robot != self.robot
+        ):
+            raise InvalidInputError(
+                "program", one_line(self.program), "a Program of this setup's robot, or None"
+            )
         object.__setattr__(self, "signals", _check_signals(self.signals or {}, self.robot))
         if self.simulation is not None:
             object.__setattr__(self, "simulation", _simulation(self.simulation))
@@ -199,6 +216,8 @@ class Setup:
             data["signals"] = {key: s.to_dict() for key, s in self.signals.items()}
         if self.simulation is not None:
             data["simulation"] = self.simulate_kwargs()
+        if self.program is not None:
+            data["program"] = self.program.to_dict()
         return data
 
     def to_json(self, indent: int | None = 2) -> str:
@@ -237,7 +256,13 @@ class Setup:
         robot = robot_from_dict(data["robot"])
         signals = _check_signals(data.get("signals", {}), robot)
         simulation = data.get("simulation")
-        return cls(robot, signals, None if simulation is None else check_simulation(simulation))
+        program = data.get("program")
+        return cls(
+            robot,
+            signals,
+            None if simulation is None else check_simulation(simulation),
+            None if program is None else Program.from_dict(program, robot),
+        )
 
     @classmethod
     def from_json(cls, text: str) -> Setup:
@@ -320,7 +345,7 @@ def load_setup(source: str | bytes | os.PathLike[str]) -> Setup:
 
 
 def load(path: str | os.PathLike[str]) -> Robot:
-    """Read the robot of a robotconf file (signals and settings are validated, then dropped).
+    """Read the robot of a robotconf file (signals, settings, a program: validated, dropped).
 
     Parameters
     ----------
