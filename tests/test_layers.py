@@ -32,10 +32,10 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("io", "teaching", "presets", "programs"),
     ("plots",),
     ("scene",),
-    ("panel", "cli", "grading"),
+    ("panel", "cli", "grading", "report"),
     ("__init__", "__main__"),
 )
-PRESENTATION = ("plots", "scene", "panel", "cli", "grading")
+PRESENTATION = ("plots", "scene", "panel", "cli", "grading", "report")
 SHARED_BASE = ("robotconf._errors", "robotconf._validation", "robotconf._budget")
 
 #: The only places where the core reaches up a layer: methods that hand over to a richer

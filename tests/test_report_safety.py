@@ -20,8 +20,9 @@ import numpy as np
 import pytest
 
 import robotconf as rc
-from robotconf import cli
+from robotconf import report
 from robotconf.cli import main
+from robotconf.report import MAX_MODULE_PLOTS, _steps, _write
 from robotconf.signals import Sine
 from robotconf.teaching import symbolic_fits
 
@@ -208,7 +209,7 @@ def test_long_chain_report_finishes_quickly_with_the_symbolic_note(tmp_path, n):
     assert "Symbolic (q1" not in matrices and "l1" not in matrices
     report = (out / "report.md").read_text(encoding="utf-8")
     assert "No symbolic matrices: this chain is too long" in report
-    shown = min(n, cli.MAX_MODULE_PLOTS)
+    shown = min(n, MAX_MODULE_PLOTS)
     assert (out / f"dva_M{shown}.png").is_file()
     assert not (out / f"dva_M{shown + 1}.png").exists()
     assert ("DVA figures are written for modules 1 to 16 of 64" in report) == (n == 64)
@@ -300,13 +301,13 @@ def test_finite_inputs_that_overflow_write_no_table(tmp_path):
 def test_non_finite_results_are_named_before_dva_csv_is_written():
     robot = rc.Robot([rc.Module("Rz"), rc.Module("Ry", a=(1, 0, 0))], end_effector=(1, 0, 0))
     motion = rc.simulate(robot, {"q1": Sine()}, t_end=1.0, dt=0.25)
-    cli._check_finite(motion, motion.stats())  # finite: passes
+    _steps.check_finite(motion, motion.stats())  # finite: passes
     # Row 15 + 6 + 1 is M2's velocity y (15 series per point: 5 quantities × x, y, z).
     columns = motion.columns().copy()
     columns[15 + 6 + 1, 2] = np.inf
     overflowed = SimpleNamespace(columns=lambda: columns, points=motion.points, t=motion.t)
-    with pytest.raises(cli.BadInput, match=r"dva.csv: the velocity \(y\) of M2 .* t = 0.5 s"):
-        cli._check_finite(overflowed, motion.stats())
+    with pytest.raises(report.BadInput, match=r"dva.csv: the velocity \(y\) of M2 .* t = 0.5 s"):
+        _steps.check_finite(overflowed, motion.stats())
 
 
 def test_statistics_that_overflow_are_refused():
@@ -314,8 +315,8 @@ def test_statistics_that_overflow_are_refused():
     motion = rc.simulate(robot, {"q1": Sine(amplitude=1e200)}, t_end=1.0, dt=0.25)
     assert np.isfinite(motion.columns()).all()
     # The RMS squares 1e200: inf, although every value is finite.
-    with pytest.raises(cli.BadInput, match=r"statistics.csv: the rms of the position \(x\)"):
-        cli._check_finite(motion, motion.stats())
+    with pytest.raises(report.BadInput, match=r"statistics.csv: the rms of the position \(x\)"):
+        _steps.check_finite(motion, motion.stats())
 
 
 # -- the output folder ------------------------------------------------------------------
@@ -368,7 +369,7 @@ def _failing_step(error: BaseException):
     ],
 )  # fmt: skip
 def test_every_failure_is_one_line_with_status_2(tmp_path, capsys, monkeypatch, error, expected):
-    monkeypatch.setattr(cli, "_write_plots", _failing_step(error))
+    monkeypatch.setattr(_write, "write_plots", _failing_step(error))
     argv = ["report", "--preset", "paper", "--t-end", "1", "--quiet", "--no-symbolic"]
     argv += ["--out", str(tmp_path)]
     assert main(argv) == 2
@@ -377,31 +378,31 @@ def test_every_failure_is_one_line_with_status_2(tmp_path, capsys, monkeypatch, 
 
 
 def test_ctrl_c_ends_with_status_130(tmp_path, capsys, monkeypatch):
-    monkeypatch.setattr(cli, "_write_plots", _failing_step(KeyboardInterrupt()))
+    monkeypatch.setattr(_write, "write_plots", _failing_step(KeyboardInterrupt()))
     argv = ["report", "--preset", "paper", "--t-end", "1", "--quiet", "--out", str(tmp_path)]
     assert main(argv) == 130
     assert capsys.readouterr().err == "robotconf: interrupted\n"
 
 
 def test_long_messages_stay_one_bounded_line(tmp_path, capsys, monkeypatch):
-    monkeypatch.setattr(cli, "_write_plots", _failing_step(ValueError("x\n" * 5000)))
+    monkeypatch.setattr(_write, "write_plots", _failing_step(ValueError("x\n" * 5000)))
     argv = ["report", "--preset", "paper", "--t-end", "1", "--quiet", "--out", str(tmp_path)]
     assert main(argv) == 2
     line = one_error_line(capsys.readouterr().err)
-    assert len(line) <= len("robotconf: ") + cli.MAX_MESSAGE_CHARS
+    assert len(line) <= len("robotconf: ") + report.MAX_MESSAGE_CHARS
 
 
 def test_warnings_do_not_reach_stderr(tmp_path, capsys, monkeypatch):
     import warnings
 
-    write_plots = cli._write_plots
+    write_plots = _write.write_plots
 
     def noisy(*args, **kwargs):
         warnings.warn("Glyph 1234 missing from font", UserWarning, stacklevel=1)
         np.float64(1e308) * 10  # numpy's overflow RuntimeWarning
         return write_plots(*args, **kwargs)
 
-    monkeypatch.setattr(cli, "_write_plots", noisy)
+    monkeypatch.setattr(_write, "write_plots", noisy)
     argv = ["report", "--preset", "paper", "--t-end", "1", "--quiet", "--no-scene"]
     assert main([*argv, "--out", str(tmp_path)]) == 0
     assert capsys.readouterr().err == ""

@@ -1,7 +1,7 @@
 """The answer key as a Markdown document.
 
 Values sit in fenced code blocks and formulas between ``$$``; the few words taken from
-notebooks (a check's name, a student id) go through :func:`robotconf.cli.markdown_text`,
+notebooks (a check's name, a student id) go through :func:`robotconf.report.markdown_text`,
 so nothing in a notebook can add markup to the key.
 """
 
@@ -29,7 +29,7 @@ _KINDS = {
 
 
 def _text(value: object) -> str:
-    from ..cli import markdown_text
+    from ..report import markdown_text
 
     return markdown_text(value)
 

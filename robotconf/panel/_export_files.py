@@ -1,7 +1,7 @@
 """What each export of the panel contains: bytes or text made by the core's own functions.
 
 Nothing here is drawn or computed by the panel itself: the report is
-:func:`robotconf.cli.write_report` (what ``robotconf report`` writes), the figures are
+:func:`robotconf.report.write_report` (what ``robotconf report`` writes), the figures are
 :func:`~robotconf.plot_robot` and :meth:`Motion.plot <robotconf.Motion.plot>`, the scene
 page is :meth:`Scene.export_html <robotconf.scene.Scene.export_html>`, the URDF is
 :func:`~robotconf.to_urdf` and the LaTeX is a step of :func:`~robotconf.derivation`.
@@ -73,10 +73,10 @@ def report_zip(
     InvalidInputError
         Bad settings, or a run larger than the memory budget (checked before anything
         is computed).
-    robotconf.cli.BadInput
+    robotconf.report.BadInput
         Results that overflow to inf or NaN.
     """
-    from ..cli import write_report
+    from ..report import write_report
 
     folder = f"{file_stem(robot.name)}_report"
     buffer = io.BytesIO()

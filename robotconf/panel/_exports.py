@@ -17,7 +17,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from .._errors import InvalidInputError
-from ..cli import BadInput
+from ..report import BadInput
 from ..io import to_urdf
 from ..kinematics import Robot
 from ..teaching import Derivation, derivation, symbolic_fits

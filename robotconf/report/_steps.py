@@ -1,0 +1,178 @@
+"""The steps of a report: memory check, matrices, figures, the 3D scene, finite results."""
+
+from __future__ import annotations
+
+from pathlib import Path
+from typing import TYPE_CHECKING
+
+from .._budget import check_memory
+from ..motion import QUANTITIES, SimulationSettings
+from ._bad_input import BadInput
+
+if TYPE_CHECKING:  # pragma: no cover
+    import pandas as pd
+    from matplotlib.figure import Figure
+
+    from ..kinematics import Robot
+    from ..motion import Motion
+
+__all__ = [
+    "DPI",
+    "MAX_MODULE_PLOTS",
+    "RESULT_COPIES",
+    "SYMBOLIC_OFF",
+    "SYMBOLIC_TOO_LONG",
+    "check_report_memory",
+    "check_finite",
+    "symbolic_state",
+    "write_matrices",
+    "write_plots",
+    "module_plot",
+    "write_scene",
+]
+
+DPI = 100
+
+#: Modules that get a dva_M<i>.png of their own. Each 3 × 3 figure takes about 0.6 s to
+#: lay out and save, so a 64-module chain would spend 40 s on them; the rest are one
+#: ``motion.plot(i)`` away (report.md says so).
+MAX_MODULE_PLOTS = 16
+
+#: Peak memory of simulate + table + statistics + CSV, in copies of the results (15
+#: floats per sample and point). Measured: 3.2 (results, kernel work arrays, the
+#: statistics' sorted copy); pandas writes the CSV in chunks.
+RESULT_COPIES = 4
+
+SYMBOLIC_TOO_LONG = (
+    "No symbolic matrices: this chain is too long for them by default, as sympy's "
+    "time grows exponentially with the rotations in the chain, from seconds to many "
+    "minutes (robotconf.teaching.symbolic_fits). To get them anyway, run "
+    "rc.derivation(robot, symbolic=True) in a notebook and accept the wait."
+)
+SYMBOLIC_OFF = "No symbolic matrices: --no-symbolic was given."
+
+
+def check_report_memory(robot: Robot, settings: SimulationSettings) -> None:
+    """Refuse, before anything is allocated, a run whose results would not fit in memory."""
+    samples = settings.samples
+    values = float(samples) * (robot.n + 1) * len(QUANTITIES) * 3
+    coordinates = 3.0 * robot.n * samples  # q, q̇, q̈
+    check_memory(
+        "dt",
+        settings.dt,
+        8.0 * (RESULT_COPIES * values + coordinates),
+        "a larger dt or a shorter run (t_end − t0), or a larger ROBOTCONF_MEMORY_BUDGET",
+    )
+
+
+def check_finite(motion: Motion, stats: pd.DataFrame) -> None:
+    """Refuse results that overflowed to inf or NaN, naming the first such column.
+
+    The inputs were finite (the core checks them), but large lengths or fast signals can
+    still overflow along the chain or in a statistic (RMS squares its values).
+    """
+    import numpy as np
+
+    data = motion.columns()
+    if not np.isfinite(data).all():
+        column, sample = np.argwhere(~np.isfinite(data))[0]
+        point, rest = divmod(int(column), 3 * len(QUANTITIES))
+        quantity, axis = divmod(rest, 3)
+        raise BadInput(
+            f"dva.csv: the {QUANTITIES[quantity]} ({'xyz'[axis]}) of {motion.points[point]} "
+            f"overflows to inf or NaN at t = {motion.t[sample]:g} s; allowed: smaller "
+            "lengths and signal values (well below 1e308)"
+        )
+    table = stats.to_numpy()
+    if not np.isfinite(table).all():
+        row, column = np.argwhere(~np.isfinite(table))[0]
+        point, quantity, axis = stats.index[row]
+        raise BadInput(
+            f"statistics.csv: the {stats.columns[column]} of the {quantity} ({axis}) of "
+            f"{point} overflows to inf or NaN; allowed: smaller lengths and signal values "
+            "(well below 1e154, as squares enter the RMS)"
+        )
+
+
+def symbolic_state(robot: Robot, wanted: bool) -> str:
+    """``"built"``, ``"off"`` (--no-symbolic) or ``"too long"`` (over the symbolic limit)."""
+    from ..teaching import symbolic_fits
+
+    if not wanted:
+        return "off"
+    return "built" if symbolic_fits(robot) else "too long"
+
+
+def write_matrices(robot: Robot, out: Path, symbolic: str) -> list[str]:
+    from ..teaching import derivation, latex_text
+
+    numeric = derivation(robot)
+    text = [
+        "Forward kinematics at the configured position (the paper's Figure 13)",
+        "=" * 70,
+        str(numeric),
+    ]
+    tex = [
+        "\\section*{Forward kinematics at the configured position}",
+        "\\[" + numeric.latex() + "\\]",
+    ]
+    if symbolic == "built":
+        steps = derivation(robot, symbolic=True, lengths=True)
+        text += ["", "Symbolic (q1 … qn and lengths l1, l2, … as symbols)", "=" * 70, str(steps)]
+        tex += ["\\section*{Symbolic}", "\\[" + steps.latex() + "\\]"]
+    else:
+        note = SYMBOLIC_OFF if symbolic == "off" else SYMBOLIC_TOO_LONG
+        text += ["", note]
+        tex += ["\\section*{Symbolic}", latex_text(note)]
+    (out / "matrices.txt").write_text("\n".join(text) + "\n", encoding="utf-8")
+    document = [
+        "\\documentclass{article}",
+        "\\usepackage{amsmath}",
+        "\\usepackage[margin=1.5cm,landscape]{geometry}",
+        "\\begin{document}",
+        "\\allowdisplaybreaks",
+        *tex,
+        "\\end{document}",
+    ]
+    (out / "matrices.tex").write_text("\n".join(document) + "\n", encoding="utf-8")
+    return ["matrices.txt", "matrices.tex"]
+
+
+def save_figure(fig: Figure, path: Path) -> None:
+    fig.savefig(path, dpi=DPI)
+
+
+def write_plots(motion: Motion, out: Path, unit: str) -> list[str]:
+    import numpy as np
+
+    from ..plots import plot_coordinates, plot_motion, plot_robot
+
+    written = []
+    # One decimal as in the paper's Figure 14, three for arms measured in metres.
+    size = float(np.ptp(motion.robot.frame_origins(), axis=0).max())
+    digits = 1 if size >= 10 else 3
+    save_figure(plot_robot(motion.robot, length_unit=unit, digits=digits), out / "robot.png")
+    save_figure(plot_coordinates(motion, unit), out / "q.png")
+    written += ["robot.png", "q.png"]
+    save_figure(plot_motion(motion, "EE", displacement=True, length_unit=unit), out / "dva_EE.png")
+    written.append("dva_EE.png")
+    # By index, never by name: the file name is always safe and always distinct.
+    for i in range(min(motion.robot.n, MAX_MODULE_PLOTS)):
+        name = module_plot(i)
+        save_figure(plot_motion(motion, i, displacement=True, length_unit=unit), out / name)
+        written.append(name)
+    return written
+
+
+def module_plot(index: int) -> str:
+    return f"dva_M{index + 1}.png"
+
+
+def write_scene(motion: Motion, out: Path) -> list[str]:
+    from ..scene import RecordingChannel, Scene
+
+    # The HTML export needs no front end: a recording channel stands in for the widget.
+    scene = Scene(motion.robot, channel=RecordingChannel())
+    scene.animate(motion)
+    scene.export_html(out / "scene.html")
+    return ["scene.html"]
