@@ -2,7 +2,8 @@
 
 ``import robotconf as rc`` gives the names a notebook needs, grouped by concept below. Each
 lives in a folder of its own (docs/architecture.md): :mod:`robotconf.kinematics`,
-:mod:`robotconf.signals`, :mod:`robotconf.motion`, :mod:`robotconf.programs`,
+:mod:`robotconf.signals`, :mod:`robotconf.motion`, :mod:`robotconf.inverse_kinematics`
+(``rc.ik``, ``rc.ik_all``), :mod:`robotconf.programs`,
 :mod:`robotconf.teaching`, :mod:`robotconf.io`, :mod:`robotconf.presets`,
 :mod:`robotconf.plots`, and the presentation layers :mod:`robotconf.scene`,
 :mod:`robotconf.panel` and :mod:`robotconf.grading`. Importing the
@@ -24,6 +25,7 @@ from . import presets, signals
 from ._budget import memory_budget, set_memory_budget
 from ._errors import InvalidInputError
 from ._validation import check_finite_number, check_joint_values, check_vector3
+from .inverse_kinematics import IKResult, IKSolutions, ik, ik_all
 from .io import Setup, load, load_setup, to_urdf
 from .kinematics import (
     DH_CONVENTIONS,
@@ -159,6 +161,11 @@ __all__ = [
     "assert_dh_table",
     "DHTableCheck",
     "Variant",
+    # inverse kinematics
+    "ik",
+    "ik_all",
+    "IKResult",
+    "IKSolutions",
     # robot programs
     "Program",
     "PTP",

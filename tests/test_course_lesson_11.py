@@ -14,7 +14,7 @@ import numpy as np
 import pytest
 
 import robotconf as rc
-from robotconf.ik import ik, ik_all
+from robotconf.inverse_kinematics import ik, ik_all
 
 from .course_support import COURSE, exercise_cells, run_with_answers, solutions_path
 

@@ -1,7 +1,7 @@
 """The IK answer checks: any solution passes, every closed-form solution for a set, slips named.
 
 The reference numbers are derived by hand for the planar 2R arm (law of cosines and
-atan2, written out below), independently of ``robotconf.ik``; the checker itself judges
+atan2, written out below), independently of the solvers; the checker itself judges
 by forward kinematics.
 """
 
@@ -14,7 +14,7 @@ import pytest
 
 import robotconf as rc
 from robotconf import InvalidInputError
-from robotconf.ik import ik, ik_all
+from robotconf.inverse_kinematics import ik, ik_all
 from robotconf.teaching import IK_DIAGNOSES, IKCheck
 
 ARM = rc.preset("planar_2r", l1=1, l2=1)

@@ -15,7 +15,7 @@ import pytest
 
 import robotconf as rc
 from robotconf import InvalidInputError
-from robotconf.ik import IKSolutions, ik_all, recognize
+from robotconf.inverse_kinematics import IKSolutions, ik_all, recognize
 
 PI = math.pi
 RNG_SEED = 20240611

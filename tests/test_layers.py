@@ -28,7 +28,7 @@ PACKAGE = Path(__file__).resolve().parents[1] / "robotconf"
 LAYERS: tuple[tuple[str, ...], ...] = (
     ("_base",),
     ("kinematics", "signals"),
-    ("motion", "ik"),
+    ("motion", "inverse_kinematics"),
     ("io", "teaching", "presets", "programs"),
     ("plots",),
     ("scene",),

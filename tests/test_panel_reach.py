@@ -16,7 +16,7 @@ import numpy as np
 import pytest
 
 import robotconf as rc
-from robotconf.ik import ik_all
+from robotconf.inverse_kinematics import ik_all
 from robotconf.panel import Configurator
 from robotconf.panel._reach_pose import pose_from_xyz_rpy, rotation_from_rpy, xyz_rpy_from_pose
 from robotconf.scene import RecordingChannel, Scene

@@ -17,9 +17,9 @@ import ipywidgets as widgets
 import numpy as np
 
 from .._errors import InvalidInputError
-from ..report import BadInput
 from ..io import to_urdf
 from ..kinematics import Robot
+from ..report import BadInput
 from ..teaching import Derivation, derivation, symbolic_fits
 from ._app_mode import code_hint
 from ._callbacks import Guarded, observe, on_click

@@ -1,7 +1,7 @@
 """The Reach tab's closed-form solutions: one button per branch, and why there are none.
 
-The solutions come from the core alone (:func:`robotconf.ik.ik_all`, family from
-:func:`robotconf.ik.recognize`); this module only words the cases around them — no
+The solutions come from the core alone (:func:`robotconf.ik_all`, family from
+:func:`robotconf.inverse_kinematics.recognize`); this module only words the cases around them — no
 closed form for this geometry, a family that needs a pose while the tab asks for a point,
 a target out of reach — and lists the branches as buttons, flagged when a branch lies
 outside the joint limits and highlighted when the robot stands on it.
@@ -18,7 +18,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from .._errors import InvalidInputError
-from ..ik import IKSolutions, ik_all, recognize
+from ..inverse_kinematics import IKSolutions, ik_all, recognize
 from ..kinematics import Robot, characteristic_length
 from ._callbacks import on_click
 from ._errors_display import ErrorLabel

@@ -1,11 +1,11 @@
 """The "Reach" tab: inverse kinematics in the panel.
 
 Type or drag a target (x, y, z, and roll, pitch, yaw for a pose) and the robot follows:
-each change solves :func:`robotconf.ik.ik` seeded from the current q, and a solution
+each change solves :func:`robotconf.ik` seeded from the current q, and a solution
 moves the robot through the panel's usual path (undo, bound file, p_EE, scene). When the
 target cannot be reached the core's reason is shown beside the controls, the robot stays
 where it was and the target marker turns orange-red. Robots of a classic geometry also
-list every closed-form solution (:func:`robotconf.ik.ik_all`) as buttons and, while the
+list every closed-form solution (:func:`robotconf.ik_all`) as buttons and, while the
 tab shows, as faint ghost robots in the 3D pane. Dragging the marker in the pane is not
 offered: the sliders move the target.
 """
@@ -22,7 +22,7 @@ import ipywidgets as widgets
 import numpy as np
 
 from .._errors import InvalidInputError
-from ..ik import IKResult, ik
+from ..inverse_kinematics import IKResult, ik
 from ..kinematics import Robot, characteristic_length
 from ._callbacks import observe, on_click
 from ._errors_display import ErrorLabel

@@ -14,7 +14,7 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import one_line
-from ..ik import IKResult, ik
+from ..inverse_kinematics import IKResult, ik
 from ._chain import Chain, kinematics
 from ._limits import Limits
 from ._moves import CIRC, LIN, PTP, Move, Wait

@@ -19,7 +19,7 @@ import numpy as np
 
 from .._budget import check_memory
 from .._errors import InvalidInputError
-from ..ik import ik
+from ..inverse_kinematics import ik
 from ..motion import SimulationSettings
 from ._chain import Chain, bias, kinematics, solve
 from ._plan import PATH_TOL, Segment

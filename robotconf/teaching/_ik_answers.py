@@ -4,7 +4,7 @@ An IK exercise has many right answers (the elbow up and the elbow down, any angl
 whole turns), so :func:`check_ik_solution` never compares with one stored solution: it
 runs the answer through the robot's forward kinematics and compares the end effector with
 the target. Only a wrong answer is compared with the closed-form solutions of
-:func:`robotconf.ik.ik_all`, to name the slip (:mod:`._ik_answers_diagnosis`). Sets of
+:func:`robotconf.ik_all`, to name the slip (:mod:`._ik_answers_diagnosis`). Sets of
 solutions are checked by :func:`~robotconf.teaching.check_ik_solutions`
 (:mod:`._ik_answers_sets`).
 

@@ -16,7 +16,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..ik import IKSolutions, ik
+from ..inverse_kinematics import IKSolutions, ik
 from ..kinematics import joint_axes
 from ._answer_checks_input import number_text
 from ._answer_checks_mistakes import rounded
@@ -189,7 +189,7 @@ def elbow_joints(solutions: IKSolutions, revolute: np.ndarray) -> list[int]:
     differ only in the elbow (labels "elbow up" / "elbow down", or left / right).
 
     >>> import robotconf as rc
-    >>> from robotconf.ik import ik_all
+    >>> from robotconf.inverse_kinematics import ik_all
     >>> elbow_joints(ik_all(rc.preset("paper"), [30, 20, 50]), np.ones(3, bool))
     [2]
     """

@@ -4,7 +4,7 @@ forward kinematics that decides whether a configuration reaches it.
 An IK exercise has many right answers (two elbow solutions, whole turns added to any
 angle), so an answer is never compared with one stored solution: its end effector is
 computed and compared with the target. The closed-form solutions of
-:func:`robotconf.ik.ik_all` are read only to explain a wrong answer or to list every
+:func:`robotconf.ik_all` are read only to explain a wrong answer or to list every
 solution of a set.
 """
 
@@ -18,7 +18,7 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import as_float_array, check_finite_number, one_line
-from ..ik import IKSolutions, ik_all
+from ..inverse_kinematics import IKSolutions, ik_all
 from ..kinematics import Robot, characteristic_length
 from ._answer_checks_input import number_text
 

@@ -1,6 +1,6 @@
 """The check for every inverse-kinematics solution of a target, in any order.
 
-The reference is the list of closed-form solutions of :func:`robotconf.ik.ik_all`. Each
+The reference is the list of closed-form solutions of :func:`robotconf.ik_all`. Each
 element of the answer is judged by forward kinematics first (does it reach the target?),
 then paired with the closed-form row it equals (revolute angles modulo a full turn). A
 missing row is named by its branch ("elbow up") without its values, an element that
@@ -15,7 +15,7 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_flag, one_line
-from ..ik import IKSolutions, ik_all
+from ..inverse_kinematics import IKSolutions, ik_all
 from ._answer_checks_input import check_text, number_text
 from ._answer_checks_mistakes import names_text
 from ._ik_answers import read_answer
@@ -223,7 +223,7 @@ def check_ik_solutions(
         ``"[[0, pi/2], [pi/2, -pi/2]]"``; one list alone is a set of one. Angles equal
         modulo a full turn are the same solution.
     robot : Robot
-        A robot with closed-form solutions (:func:`robotconf.ik.ik_all`: planar 2R/3R,
+        A robot with closed-form solutions (:func:`robotconf.ik_all`: planar 2R/3R,
         SCARA, 3R elbow, spherical-wrist 6R, UR).
     target : array-like, shape (3,) or (4, 4)
         A reachable point, or a pose (6R arms need one: ``mode="pose"``).

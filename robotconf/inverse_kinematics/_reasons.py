@@ -1,6 +1,6 @@
 """Why a target failed, in words: out of reach, at a singularity, past a joint limit.
 
-The numbers behind each sentence come from :mod:`robotconf.ik._numeric`; this module
+The numbers behind each sentence come from :mod:`robotconf.inverse_kinematics._numeric`; this module
 finds the joints to name (from the Jacobian's null space, or from a solution outside the
 ranges) and writes the sentences.
 """

@@ -38,7 +38,7 @@ class IKSolutions:
     Examples
     --------
     >>> import robotconf as rc
-    >>> from robotconf.ik import ik_all
+    >>> from robotconf.inverse_kinematics import ik_all
     >>> sols = ik_all(rc.preset("planar_2r", l1=1, l2=1), [1, 1, 0])
     >>> len(sols), sols.labels
     (2, ('elbow down', 'elbow up'))

@@ -63,7 +63,7 @@ def solve_ur(
     Examples
     --------
     >>> import robotconf as rc
-    >>> from robotconf.ik._chain_axes import chain_axes
+    >>> from robotconf.inverse_kinematics._chain_axes import chain_axes
     >>> ur5 = rc.preset("ur5")
     >>> pose = ur5.end_effector_pose([0.1, -1.2, 1.3, 0.4, 0.5, 0.6])
     >>> len(solve_ur(chain_axes(ur5), pose[:3, 3], pose[:3, :3], "").rows)

@@ -85,21 +85,27 @@ def check_mode(mode: Any) -> str:
     return name
 
 
-def _check_pose(pose: np.ndarray, field: str) -> None:
-    if np.max(np.abs(pose[3] - (0.0, 0.0, 0.0, 1.0))) > 1e-12:
+def _check_poses(poses: np.ndarray, batched: bool) -> None:
+    """Refuse the first of poses (T, 4, 4) with a bad last row or rotation."""
+    rows = np.max(np.abs(poses[:, 3] - (0.0, 0.0, 0.0, 1.0)), axis=1) > 1e-12
+    rotation = poses[:, :3, :3]
+    drift = np.max(np.abs(rotation.transpose(0, 2, 1) @ rotation - np.eye(3)), axis=(1, 2))
+    det = np.linalg.det(rotation)
+    bad = rows | ~(drift <= ROTATION_TOLERANCE) | ~(np.abs(det - 1.0) <= ROTATION_TOLERANCE)
+    if not bad.any():
+        return
+    i = int(np.flatnonzero(bad)[0])
+    field = f"target[{i}]" if batched else "target"
+    if rows[i]:
         raise InvalidInputError(
-            field, one_line(pose[3]), _TARGET, problem="the last row is not [0, 0, 0, 1]:"
+            field, one_line(poses[i, 3]), _TARGET, problem="the last row is not [0, 0, 0, 1]:"
         )
-    rotation = pose[:3, :3]
-    drift = float(np.max(np.abs(rotation.T @ rotation - np.eye(3))))
-    det = float(np.linalg.det(rotation))
-    if drift > ROTATION_TOLERANCE or abs(det - 1.0) > ROTATION_TOLERANCE:
-        what = (
-            "a reflection (det −1)" if det < 0 else f"not orthonormal (RᵀR − I up to {drift:.2g})"
-        )
-        raise InvalidInputError(
-            field, one_line(rotation), _TARGET, problem=f"the rotation is {what}:"
-        )
+    what = (
+        "a reflection (det −1)" if det[i] < 0 else f"not orthonormal (RᵀR − I up to {drift[i]:.2g})"
+    )
+    raise InvalidInputError(
+        field, one_line(rotation[i]), _TARGET, problem=f"the rotation is {what}:"
+    )
 
 
 def check_targets(target: Any, mode: str) -> Targets:
@@ -153,8 +159,7 @@ def check_targets(target: Any, mode: str) -> Targets:
                 problem="a point has no orientation:",
             )
         return Targets(np.ascontiguousarray(array), None, batched)
-    for i, pose in enumerate(array):
-        _check_pose(pose, f"target[{i}]" if batched else "target")
+    _check_poses(array, batched)
     rotations = np.ascontiguousarray(array[:, :3, :3]) if mode == "pose" else None
     return Targets(np.ascontiguousarray(array[:, :3, 3]), rotations, batched)
 
@@ -277,7 +282,7 @@ def check_options(
     seed: Any,
     respect_limits: Any,
 ) -> Options:
-    """Validate the numeric options of :func:`~robotconf.ik.ik`.
+    """Validate the numeric options of :func:`~robotconf.ik`.
 
     >>> check_options(1e-9, 1e-9, 200, 8, 0, True).seeds
     8

@@ -78,7 +78,7 @@ def solve_spherical_wrist(
     Examples
     --------
     >>> import robotconf as rc
-    >>> from robotconf.ik._chain_axes import chain_axes
+    >>> from robotconf.inverse_kinematics._chain_axes import chain_axes
     >>> puma = rc.preset("puma560")
     >>> pose = puma.end_effector_pose([0.1, 0.2, -0.3, 0.4, 0.5, 0.6])
     >>> len(solve_spherical_wrist(chain_axes(puma), pose[:3, 3], pose[:3, :3], "").rows)

@@ -1,4 +1,4 @@
-"""The answer of :func:`~robotconf.ik.ik`: joint values, and why the solver stopped."""
+"""The answer of :func:`~robotconf.ik`: joint values, and why the solver stopped."""
 
 from __future__ import annotations
 
@@ -36,9 +36,10 @@ class IKResult:
         ``R_target·Rᵀ`` over the turn rows the mask keeps; NaN when it keeps none (mode
         ``"position"``).
     iterations : int or ndarray of int, shape (T,)
-        Steps taken, summed over every run for the target: each start tried within the
-        ranges and, where that fails on a robot with clipped joints, the same start
-        without them (so up to ``2 · seeds · max_iterations``).
+        Steps taken, summed over the runs tried for the target: its starts within the
+        ranges up to the first that converges and, where all of them fail on a robot
+        with clipped joints, the same starts without them (so up to
+        ``2 · seeds · max_iterations``).
     reason : str or tuple of str
         One of ``"converged"``, ``"unreachable"``, ``"singular"``, ``"joint limit"``,
         ``"iteration limit"``.

@@ -1,15 +1,16 @@
 """The numeric inverse-kinematics solver: starts, retries and an honest reason for each.
 
 :func:`ik` validates, then runs the batched damped least squares of
-:mod:`robotconf.ik._lm` from up to ``seeds`` starts per target — ``q0`` first, then the
+:mod:`._lm` from up to ``seeds`` starts per target — ``q0`` first, then the
 same random configurations for every target — and keeps the first converged run (or the
-closest one). Each start runs within the joint ranges; where that fails and some joint is
-clipped (not a full-turn revolute), the same start runs again without the ranges, and a
-solution whose revolute joints fit the ranges after whole turns counts as converged.
+closest one). Each start runs within the joint ranges; where all of them fail and some
+joint is clipped (not a full-turn revolute), the starts run again without the ranges, and
+a solution whose revolute joints fit the ranges after whole turns counts as converged
+(:mod:`robotconf.inverse_kinematics._search` runs them in waves).
 
 Targets that still fail are diagnosed, in this order:
 
-1. **unreachable**: outside the reach shell (:mod:`robotconf.ik._reach`), a proof;
+1. **unreachable**: outside the reach shell (:mod:`robotconf.inverse_kinematics._reach`), a proof;
 2. **joint limit**: a run without the ranges converged, but no whole-turn twin of its
    solution fits them; the joints past their limits are named;
 3. **singular**: the Jacobian at the final configuration lost rank against the robot's
@@ -22,7 +23,6 @@ Targets that still fail are diagnosed, in this order:
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import Any
 
 import numpy as np
@@ -31,22 +31,22 @@ from .._budget import check_memory
 from .._errors import InvalidInputError
 from .._validation import one_line
 from ..kinematics import Robot
-from ._lm import CONVERGED, STALLED, Run, blocked_joints, gradient_ratio, solve
-from ._problem import Problem, make_problem
-from ._reach import Reach, reach_shell
+from ._lm import CONVERGED, STALLED, blocked_joints, gradient_ratio
+from ._problem import Problem, make_problem, robot_model
+from ._reach import Reach
 from ._reasons import (
     SINGULAR_TOL,
     beyond_reach_message,
     closest_message,
     converged_message,
     dependent_joints,
-    fit_into_limits,
     iteration_message,
     joint_limit_message,
     singular_message,
 )
 from ._result import IKResult, single_or_batch
-from ._structure import generic_rank, rank, warn_if_overconstrained
+from ._search import WAVE_RUNS, Search, search
+from ._structure import cached_rank, rank, warn_if_overconstrained
 from ._targets import check_mask, check_mode, check_options, check_start, check_targets
 
 __all__ = ["ik", "ik_bytes"]
@@ -61,15 +61,17 @@ LOCAL_MINIMUM_RATIO = 1e-6
 def ik_bytes(targets: int, n: int) -> float:
     """Peak bytes of :func:`ik` for ``targets`` targets of an ``n``-joint robot.
 
-    An upper estimate (the kernel's poses and Jacobians, the steps' n×n systems, the
-    search state): measured peaks with ``tracemalloc`` for 20 000 pose targets were
-    2.8 kB per target for n = 6 and 1.75 kB for n = 3, about 1.5–1.7 times below it.
+    An upper estimate: a wave of runs (at most ``max(T, 128)``, each with its pose,
+    Jacobian, the step's n×n systems and their copies for LAPACK), plus the targets and
+    the search state. Measured peaks with ``tracemalloc``: 4.4 kB per target for 20 000
+    PUMA 560 pose targets (n = 6) and 1.7 kB for 20 000 points of the paper robot
+    (n = 3), 1.4 and 2 times below the estimate.
 
     >>> ik_bytes(1000, 6) / 1e6
-    5.848
+    7.304
     """
-    per_target = 8.0 * (6 * n * n + 40 * n + 150)
-    return targets * per_target + 1e6
+    per_run = 8.0 * (8 * n * n + 50 * n + 200)
+    return max(targets, WAVE_RUNS) * per_run + 1e6
 
 
 def ik(
@@ -81,8 +83,8 @@ def ik(
     *,
     tol: float = 1e-9,
     orientation_tol: float = 1e-9,
-    max_iterations: int = 200,
-    seeds: int = 8,
+    max_iterations: int = 100,
+    seeds: int = 32,
     seed: int = 0,
     respect_limits: bool = True,
 ) -> IKResult:
@@ -114,12 +116,13 @@ def ik(
     orientation_tol : float
         Orientation tolerance (rad).
     max_iterations : int
-        Most steps per start, 1 … 10 000.
+        Most steps per run (a start within the ranges, or without them), 1 … 10 000.
     seeds : int
         Starts per target, 1 … 64: ``q0``, then ``seeds − 1`` random configurations
         within the ranges from ``numpy.random.default_rng(seed)``, the same for every
         target (so a target gets the same answer alone or among others). A target proved
         out of reach gets ``q0`` only; a solved one stops at its first success.
+        Failed starts cost time only for the targets that need them.
     seed : int
         Seed of those random starts (≥ 0).
     respect_limits : bool
@@ -175,11 +178,11 @@ def ik(
     )
     first = check_start(q0, robot.q, count, robot.coordinate_names)
     problem = make_problem(robot, targets, weights, options.tol, options.orientation_tol)
-    typical, span = generic_rank(problem)
+    typical, span = cached_rank(robot, tuple(weights.tolist()))
     warn_if_overconstrained(problem, typical, span)
     limits = options.respect_limits
 
-    reach = reach_shell(robot, problem.moving, problem.held_q)
+    reach = robot_model(robot).reach
     position_rows = int(np.sum(problem.rows < 3))
     beyond = reach.distance(problem.positions) if position_rows == 3 else np.zeros(count)
     proved = beyond > problem.position_tol
@@ -188,13 +191,8 @@ def ik(
     draws = problem.lower + (problem.upper - problem.lower) * rng.random(
         (options.seeds - 1, robot.n)
     )
-    search = _Search.begin(problem, first, limits)
-    for attempt in range(options.seeds):
-        pending = search.pending() if attempt == 0 else search.pending(~proved)
-        if not pending.size:
-            break
-        start = first[pending] if attempt == 0 else np.tile(draws[attempt - 1], (pending.size, 1))
-        search.attempt(pending, start, options.max_iterations, limits, retry=~proved[pending])
+    found = search(problem, first, draws, proved, options.max_iterations, limits)
+    _verify(problem, found)
     return _diagnose(
         problem,
         targets.batched,
@@ -204,92 +202,18 @@ def ik(
         typical,
         options.max_iterations,
         limits,
-        search,
+        found,
     )
 
 
-@dataclass
-class _Search:
-    """The best run of each target so far, over the starts tried."""
-
-    problem: Problem
-    q: np.ndarray  # (T, n)
-    error: np.ndarray  # (T, m)
-    energy: np.ndarray  # (T,)
-    status: np.ndarray  # (T,)
-    iterations: np.ndarray  # (T,) summed over starts
-    starts: np.ndarray  # (T,)
-    # A solution found without the ranges that no whole-turn twin fits into them:
-    # (T, n) coordinates and (T, n) joints outside, the first one found per target.
-    outside_q: np.ndarray
-    outside: np.ndarray
-
-    @classmethod
-    def begin(cls, problem: Problem, first: np.ndarray, limits: bool) -> _Search:
-        count, n = first.shape
-        return cls(
-            problem,
-            q=problem.project(first, limits),
-            error=np.zeros((count, len(problem.rows))),
-            energy=np.full(count, np.inf),
-            status=np.zeros(count, dtype=int),
-            iterations=np.zeros(count, dtype=int),
-            starts=np.zeros(count, dtype=int),
-            outside_q=np.zeros((count, n)),
-            outside=np.zeros((count, n), dtype=bool),
-        )
-
-    def pending(self, allowed: np.ndarray | None = None) -> np.ndarray:
-        """Targets not yet solved (and ``allowed``)."""
-        open_ = self.status != CONVERGED
-        return np.flatnonzero(open_ if allowed is None else open_ & allowed)
-
-    def keep(self, index: np.ndarray, run: Run) -> None:
-        """Keep the runs that converged or came closer than the best so far."""
-        energy = self.problem.energy(run.error)
-        better = (run.status == CONVERGED) | (energy < self.energy[index])
-        chosen = index[better]
-        self.q[chosen] = run.q[better]
-        self.error[chosen] = run.error[better]
-        self.energy[chosen] = energy[better]
-        self.status[chosen] = run.status[better]
-
-    def attempt(
-        self,
-        index: np.ndarray,
-        start: np.ndarray,
-        iterations: int,
-        limits: bool,
-        retry: np.ndarray,
-    ) -> None:
-        """One start for targets ``index``: within the ranges, and, where that fails and
-        ``retry`` (B,) allows, without them, turning the solution's revolute joints by
-        whole turns to fit."""
-        run = solve(self.problem, index, start, iterations, limits)
-        self.iterations[index] += run.iterations
-        self.starts[index] += 1
-        self.keep(index, run)
-        if not limits or not np.any(self.problem.moving & ~self.problem.wraps):
-            return  # without a clipped joint, the run without ranges is the same run
-        failed = (run.status != CONVERGED) & retry
-        again = index[failed]
-        if not again.size:
-            return
-        free = solve(self.problem, again, start[failed], iterations, limits=False)
-        self.iterations[again] += free.iterations
-        solved = free.status == CONVERGED
-        fitted, outside = fit_into_limits(self.problem, free.q[solved])
-        inside = ~outside.any(axis=1)
-        fits = again[solved][inside]
-        if fits.size:
-            twins = fitted[inside]
-            error = self.problem.pose_errors(fits, self.problem.pose(twins))
-            status = np.where(self.problem.converged(error), CONVERGED, STALLED)
-            self.keep(fits, Run(twins, error, status, free.iterations[solved][inside]))
-        new = ~self.outside[again[solved][~inside]].any(axis=1)
-        record = again[solved][~inside][new]
-        self.outside_q[record] = fitted[~inside][new]
-        self.outside[record] = outside[~inside][new]
+def _verify(problem: Problem, found: Search) -> None:
+    """Measure the answers again with the robot's own kinematics, which is what a caller
+    checks them by; a solution that meets the tolerances only by the solver's chain (a
+    rounding apart) does not count as one."""
+    pose = problem.robot.end_effector_pose(found.q)
+    error = problem.errors_from_pose(np.arange(len(found.q)), pose)
+    found.error = error
+    found.status[(found.status == CONVERGED) & ~problem.converged(error)] = STALLED
 
 
 def _diagnose(
@@ -301,7 +225,7 @@ def _diagnose(
     typical: int,
     max_iterations: int,
     limits: bool,
-    search: _Search,
+    search: Search,
 ) -> IKResult:
     q, error, status, starts = search.q, search.error, search.status, search.starts
     count = len(q)
@@ -321,12 +245,14 @@ def _diagnose(
     open_ = open_[~past]
 
     if open_.size:
-        jacobian = problem.jacobian(open_, q[open_])
+        jacobian = problem.expand(problem.jacobian_at(open_, q[open_]))
         scaled = problem.scaled(error[open_])
         allowed = jacobian
         if limits:
-            gradient = np.einsum("bmn,bm->bn", jacobian, scaled)
-            allowed = jacobian * ~blocked_joints(problem, q[open_], gradient)[:, np.newaxis]
+            gradient = (jacobian.transpose(0, 2, 1) @ scaled[:, :, np.newaxis])[:, :, 0]
+            clipped = problem.moving & ~problem.wraps
+            blocked = blocked_joints(problem.lower, problem.upper, clipped, q[open_], gradient)
+            allowed = jacobian * ~blocked[:, np.newaxis]
         flat = gradient_ratio(allowed, scaled) <= LOCAL_MINIMUM_RATIO
         found = rank(jacobian[:, :, problem.moving], SINGULAR_TOL)
         full = problem.robot.jacobian(q[open_])

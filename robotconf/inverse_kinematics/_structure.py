@@ -16,12 +16,15 @@ only r = 2 at a time: most targets then have no solution, and :func:`ik` warns.
 from __future__ import annotations
 
 import warnings
+from functools import lru_cache
 
 import numpy as np
 
-from ._problem import Problem
+from ..kinematics import Robot
+from ._problem import Problem, make_problem
+from ._targets import Targets
 
-__all__ = ["generic_rank", "rank", "warn_if_overconstrained", "ROW_NAMES"]
+__all__ = ["generic_rank", "cached_rank", "rank", "warn_if_overconstrained", "ROW_NAMES"]
 
 #: Names of the six rows of the error, for messages.
 ROW_NAMES = ("x", "y", "z", "turn about x", "turn about y", "turn about z")
@@ -66,6 +69,19 @@ def generic_rank(problem: Problem) -> tuple[int, int]:
     typical = int(np.max(rank(jacobians)))
     span = int(rank(np.concatenate(list(jacobians), axis=1)[np.newaxis])[0])
     return typical, span
+
+
+@lru_cache(maxsize=64)
+def cached_rank(robot: Robot, weights: tuple[float, ...]) -> tuple[int, int]:
+    """:func:`generic_rank` for a robot and the six mask weights, computed once.
+
+    >>> from robotconf.presets import preset
+    >>> cached_rank(preset("planar_2r"), (1.0, 1.0, 1.0, 1.0, 1.0, 1.0))
+    (2, 3)
+    """
+    # Only the robot and the rows matter, not the targets.
+    nowhere = Targets(np.zeros((1, 3)), None, False)
+    return generic_rank(make_problem(robot, nowhere, np.array(weights), 1.0, 1.0))
 
 
 def warn_if_overconstrained(problem: Problem, typical: int, span: int) -> None:

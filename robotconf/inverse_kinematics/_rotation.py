@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["rotation_vector", "rotation_matrix"]
+__all__ = ["rotation_vector", "rotation_vector_last", "rotation_matrix"]
 
 
 def rotation_vector(rotation: np.ndarray) -> np.ndarray:
@@ -39,29 +39,61 @@ def rotation_vector(rotation: np.ndarray) -> np.ndarray:
     >>> rotation_vector(turn).round(12) + 0.0
     array([[0.        , 0.        , 1.57079633]])
     """
+    return rotation_vector_last(rotation.transpose(1, 2, 0)).T
+
+
+def rotation_vector_last(rotation: np.ndarray) -> np.ndarray:
+    """:func:`rotation_vector` with the batch last: (3, 3, B) matrices → (3, B) vectors.
+
+    The solver's layout: each entry is a contiguous row over the batch, so every step is
+    one operation over all B (and each matrix gets the same operations whatever B is).
+
+    >>> turn = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
+    >>> rotation_vector_last(turn[:, :, np.newaxis])[:, 0].round(12) + 0.0
+    array([0.        , 0.        , 1.57079633])
+    """
     r = rotation
-    skew = 0.5 * np.stack(
-        (r[:, 2, 1] - r[:, 1, 2], r[:, 0, 2] - r[:, 2, 0], r[:, 1, 0] - r[:, 0, 1]), axis=-1
-    )
-    cos = np.clip(0.5 * (r[:, 0, 0] + r[:, 1, 1] + r[:, 2, 2] - 1.0), -1.0, 1.0)
-    sin = np.linalg.norm(skew, axis=-1)
+    skew = np.empty((3, r.shape[-1]))
+    np.subtract(r[2, 1], r[1, 2], out=skew[0])
+    np.subtract(r[0, 2], r[2, 0], out=skew[1])
+    np.subtract(r[1, 0], r[0, 1], out=skew[2])
+    skew *= 0.5
+    cos = r[0, 0] + r[1, 1]
+    cos += r[2, 2]
+    cos -= 1.0
+    cos *= 0.5
+    np.clip(cos, -1.0, 1.0, out=cos)
+    squares = skew * skew
+    sin = squares[0] + squares[1]
+    sin += squares[2]
+    np.sqrt(sin, out=sin)
     angle = np.arctan2(sin, cos)
     # Small turns: θ/sin θ → 1, so s itself is the answer where sin θ underflows.
     ratio = np.divide(angle, sin, out=np.ones_like(angle), where=sin > 1e-300)
-    out = skew * ratio[:, np.newaxis]
-    wide = cos < 0.0
-    if np.any(wide):
-        rw, cw, sw = r[wide], cos[wide], skew[wide]
-        symmetric = 0.5 * (rw + rw.transpose(0, 2, 1)) - cw[:, np.newaxis, np.newaxis] * np.eye(3)
-        diagonal = np.einsum("bii->bi", symmetric)
-        best = np.argmax(diagonal, axis=-1)
-        rows = np.arange(len(best))
-        column = symmetric[rows, :, best]
-        axis = column / np.linalg.norm(column, axis=-1, keepdims=True)
-        flip = np.einsum("bi,bi->b", axis, sw) < 0.0
-        axis[flip] *= -1.0
-        out[wide] = axis * angle[wide, np.newaxis]
+    out = skew * ratio
+    wide = np.flatnonzero(cos < 0.0)
+    if wide.size:
+        out[:, wide] = _wide(r[:, :, wide], cos[wide], skew[:, wide], angle[wide])
     return out
+
+
+def _wide(r: np.ndarray, cos: np.ndarray, skew: np.ndarray, angle: np.ndarray) -> np.ndarray:
+    """Turns beyond 90°: the axis from the symmetric part ``(R + Rᵀ)/2 − cos θ·I``, whose
+    column with the largest diagonal entry is the best-conditioned multiple of ``u``."""
+    symmetric = r + r.transpose(1, 0, 2)
+    symmetric *= 0.5
+    diagonal = [symmetric[i, i] - cos for i in range(3)]
+    for i in range(3):
+        symmetric[i, i] = diagonal[i]
+    first = (diagonal[0] >= diagonal[1]) & (diagonal[0] >= diagonal[2])
+    second = ~first & (diagonal[1] >= diagonal[2])
+    column = np.where(first, symmetric[:, 0], np.where(second, symmetric[:, 1], symmetric[:, 2]))
+    squares = column * column
+    length = np.sqrt(squares[0] + squares[1] + squares[2])
+    axis = column / length
+    dot = axis[0] * skew[0] + axis[1] * skew[1] + axis[2] * skew[2]
+    axis *= np.where(dot < 0.0, -angle, angle)
+    return axis
 
 
 def rotation_matrix(vector: np.ndarray) -> np.ndarray:
