@@ -1,18 +1,49 @@
-"""Lessons 1–4 of the course: the exercises' checks are real.
+"""Lessons 1–4 of the course: the exercises' checks are real, and the numbers follow the id.
 
 For every exercise a typical wrong answer must fail its check cell with a hint that names
 the mistake (the hint comes from robotconf's checker), and the solutions must pass; right
-answers typed as text or rounded (1.5708 for π/2, 0.8776 for cos 0.5) pass too. Each
-notebook runs once per set of answers, with all its answers replaced.
+answers typed as text or rounded (1.5708 for π/2, 0.8776 for cos 0.5) pass too.
+
+The numeric exercises of lessons 2–4 draw their numbers from the student id
+(``rc.Variant``, typed in the one cell tagged ``student-id``); the symbolic ones and
+lesson 1 stay the same for everyone. The wrong answers are written with the notebook's
+own numbers, so they hold for any id. Another student's right numbers, typed as text or
+rounded, pass in that student's notebook, and the demo student's numbers fail there (the
+numbers follow the id). Each notebook runs once per set of answers, with all its answers
+replaced; the drawn numbers are read by running a notebook's other cells here, without a
+kernel.
 """
 
 from __future__ import annotations
 
+import ast
+import contextlib
 import functools
+import io
+from typing import Any
 
+import nbformat
+import numpy as np
 import pytest
 
-from .course_support import COURSE, exercise_cells, run_with_answers, solutions_path
+from .course_support import (
+    COURSE,
+    exercise_cells,
+    read_notebook,
+    run_with_answers,
+    solutions_path,
+)
+
+OTHER_ID = "s1234567"
+
+# lesson folder -> the exercises whose numbers follow the student id
+VARIED: dict[str, tuple[str, ...]] = {
+    "02_elementary_transforms": ("answer_4",),
+    "03_composing_a_chain": ("answer_4", "answer_5"),
+    "04_module_method_classic_arms": ("answer_4",),
+}
+# The lessons whose tests hand the demo student's numbers in under another id.
+SECOND_STUDENT = ("03_composing_a_chain", "04_module_method_classic_arms")
 
 # lesson folder -> {answer variable: (code of the wrong answer cell, words the hint must contain)}
 WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
@@ -57,9 +88,9 @@ WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
             'answer_3 = "[[1, 0, 0, 0], [0, 1, 0, 0], [0, 0, 1, q1], [0, 0, 0, 1]]"',
             "The offset of A1 (module M1, Tz with a = (0, 0, 20)) is missing",
         ),
-        # calculator in degree mode
+        # calculator in degree mode (q1 is the notebook's own number, in radians)
         "answer_4": (
-            "c, s = np.cos(np.radians(0.5)), np.sin(np.radians(0.5))\n"
+            "c, s = np.cos(np.radians(q1)), np.sin(np.radians(q1))\n"
             "answer_4 = [[c, -s, 0, 0], [s, c, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]",
             "calculator in degree mode",
         ),
@@ -83,15 +114,17 @@ WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
             "answer_3 = [30, 0, 20]",
             "The end-effector point P = (40, 0, 0) is missing",
         ),
-        # module 3 turned the wrong way (the sine sign of Ry)
+        # module 3 turned the wrong way (the sine sign of Ry): -q3 at the drawn pose q_4
         "answer_4": (
-            "answer_4 = [0, 30, -20]",
+            "reach = 30 * np.cos(q_4[1]) + 40 * np.cos(q_4[1] - q_4[2])\n"
+            "answer_4 = [np.cos(q_4[0]) * reach, np.sin(q_4[0]) * reach,"
+            " 20 - 30 * np.sin(q_4[1]) - 40 * np.sin(q_4[1] - q_4[2])]",
             "The sine terms of A3 (module M3, Ry with a = (30, 0, 0)) have the wrong sign",
         ),
-        # the pedestal module forgotten
+        # the pedestal module forgotten (its height h is drawn)
         "answer_5": (
             "answer_5 = [70, 0, 20]",
-            "The offset of A1 (module M1, fixed with a = (0, 0, 50)) is missing",
+            "The offset of A1 (module M1, fixed with a = (0, 0, ",
         ),
     },
     "04_module_method_classic_arms": {
@@ -111,37 +144,85 @@ WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
             ' 30 + (q3 + 10)*sin(q2)]"',
             "The sine terms of A2 (module M2, Ry with a = (0, 0, 30)) have the wrong sign",
         ),
-        # degrees fed to cos and sin
+        # degrees fed to cos and sin, at the drawn joint values q_4
         "answer_4": (
-            "answer_4 = [30 * np.cos(90) + 20 * np.cos(0), 30 * np.sin(90) + 20 * np.sin(0), 25]",
+            "q1_deg, q12_deg = np.degrees(q_4[0]), np.degrees(q_4[0] + q_4[1])\n"
+            "answer_4 = [30 * np.cos(q1_deg) + 20 * np.cos(q12_deg),"
+            " 30 * np.sin(q1_deg) + 20 * np.sin(q12_deg), 30 + q_4[2]]",
             "angles in degrees fed to sin and cos",
         ),
     },
 }
 
 
-# Right answers as students type them: text with numbers and formulas, rounded numbers.
-APPROXIMATE_ANSWERS: dict[str, dict[str, str]] = {
-    "01_homogeneous_transforms": {
-        "answer_2": 'answer_2 = "[[cos(pi/2), -sin(pi/2), 0, 30], [sin(pi/2), cos(pi/2), 0, 0],'
-        ' [0, 0, 1, 20], [0, 0, 0, 1]]"',
-        # π/2 typed as 1.5708: 40·cos(1.5708) = -1.5e-4, within 0.001 of 0
-        "answer_3": 'answer_3 = "[30 + 40*cos(1.5708), 40*sin(1.5708), 20]"',
-    },
-    "02_elementary_transforms": {
-        # cos 0.5 = 0.87758, sin 0.5 = 0.47943, to 4 decimals
-        "answer_4": 'answer_4 = "[[0.8776, -0.4794, 0, 0], [0.4794, 0.8776, 0, 0],'
-        ' [0, 0, 1, 0], [0, 0, 0, 1]]"',
-    },
-    "03_composing_a_chain": {
-        "answer_3": 'answer_3 = "[30 + 40, 0, 20]"',
-        "answer_4": "answer_4 = [0, 30.02, 60.05]",  # within 0.1 % of (0, 30, 60)
-        "answer_5": "answer_5 = np.array([[70.0], [0.0], [70.0]])",  # a column
-    },
-    "04_module_method_classic_arms": {
-        "answer_4": 'answer_4 = "[20*cos(0), 30*sin(pi/2), 30 - 5]"',
-    },
+# Lesson 1 (no per-student numbers): right answers as students type them, as text with
+# numbers and formulas.
+APPROXIMATE_ANSWERS: dict[str, str] = {
+    "answer_2": 'answer_2 = "[[cos(pi/2), -sin(pi/2), 0, 30], [sin(pi/2), cos(pi/2), 0, 0],'
+    ' [0, 0, 1, 20], [0, 0, 0, 1]]"',
+    # π/2 typed as 1.5708: 40·cos(1.5708) = -1.5e-4, within 0.001 of 0
+    "answer_3": 'answer_3 = "[30 + 40*cos(1.5708), 40*sin(1.5708), 20]"',
 }
+
+
+@functools.cache
+def _drawn(lesson: str, student: str) -> dict[str, Any]:
+    """The numbers a student's exercises notebook works with, by variable name.
+
+    The notebook's code cells run here (no kernel), the student-id cell set to
+    ``student``, without the answer and check cells.
+    """
+    namespace: dict[str, Any] = {}
+    with np.printoptions(), contextlib.redirect_stdout(io.StringIO()):
+        for cell in read_notebook(_exercises(lesson)).cells:
+            tags = set(cell.metadata.get("tags", []))
+            if cell.cell_type != "code" or tags & {"answer", "check"}:
+                continue
+            source = f"student_id = {student!r}" if "student-id" in tags else cell.source
+            exec(compile(source, f"{lesson} ({student})", "exec"), namespace)  # our notebook
+    return namespace
+
+
+def _rounded(values: Any, decimals: int) -> list:
+    return np.round(np.asarray(values, dtype=float), decimals).tolist()
+
+
+def _typed_answers(lesson: str, student: str) -> dict[str, str]:
+    """A student's right answers as they would type them: numbers, text, rounded.
+
+    Computed here, by hand-style formulas, from the numbers the student's notebook draws.
+    """
+    d = _drawn(lesson, student)
+    if lesson == "02_elementary_transforms":
+        c, s = np.cos(d["q1"]), np.sin(d["q1"])  # to 4 decimals, as text
+        return {
+            "answer_4": f'answer_4 = "[[{c:.4f}, {-s:.4f}, 0, 0], [{s:.4f}, {c:.4f}, 0, 0],'
+            f' [0, 0, 1, 0], [0, 0, 0, 1]]"'
+        }
+    if lesson == "03_composing_a_chain":
+        q1, q2, q3 = d["q_4"]
+        reach = 30 * np.cos(q2) + 40 * np.cos(q2 + q3)
+        p = [np.cos(q1) * reach, np.sin(q1) * reach, 20 - 30 * np.sin(q2) - 40 * np.sin(q2 + q3)]
+        return {
+            "answer_3": 'answer_3 = "[30 + 40, 0, 20]"',  # the same for everyone
+            "answer_4": f"answer_4 = {_rounded(p, 3)}",
+            "answer_5": f"answer_5 = np.array([[70.0], [0.0], [{20 + d['h']}]])",  # a column
+        }
+    q1, q2, q3 = d["q_4"]  # lesson 4: the SCARA as a formula in text, angles in radians
+    return {
+        "answer_4": f'answer_4 = "[30*cos({q1:.5f}) + 20*cos({q1 + q2:.5f}),'
+        f' 30*sin({q1:.5f}) + 20*sin({q1 + q2:.5f}), {30 + q3:g}]"'
+    }
+
+
+def _with_student(path, student_id: str, folder):
+    """A copy of the notebook whose student-id cell holds ``student_id``."""
+    notebook = read_notebook(path)
+    (cell,) = [c for c in notebook.cells if "student-id" in c.metadata.get("tags", [])]
+    cell.source = f"student_id = {student_id!r}"
+    copy = folder / f"{path.parent.name}-{student_id}.ipynb"
+    nbformat.write(notebook, str(copy))
+    return copy
 
 
 def _lessons() -> list[str]:
@@ -192,11 +273,58 @@ def test_solutions_pass_their_checks(lesson):
     assert errors and not any(errors.values()), errors
 
 
-@pytest.mark.parametrize("lesson", sorted(APPROXIMATE_ANSWERS))
-def test_text_and_rounded_answers_pass(lesson):
-    answers = APPROXIMATE_ANSWERS[lesson]
-    errors = run_with_answers(_exercises(lesson), answers)
+def test_text_and_rounded_answers_pass():
+    errors = run_with_answers(_exercises("01_homogeneous_transforms"), APPROXIMATE_ANSWERS)
+    assert all(errors[variable] == "" for variable in APPROXIMATE_ANSWERS), errors
+
+
+@pytest.mark.parametrize("lesson", sorted(VARIED))
+def test_another_student_passes_with_their_own_numbers_typed_or_rounded(lesson, tmp_path):
+    answers = _typed_answers(lesson, OTHER_ID)
+    errors = run_with_answers(_with_student(_exercises(lesson), OTHER_ID, tmp_path), answers)
     assert all(errors[variable] == "" for variable in answers), errors
+
+
+@pytest.mark.parametrize("lesson", SECOND_STUDENT)
+def test_the_demo_students_numbers_fail_for_another_student(lesson, tmp_path):
+    demo = {v: _typed_answers(lesson, "demo")[v] for v in VARIED[lesson]}
+    other = _typed_answers(lesson, OTHER_ID)
+    assert all(demo[variable] != other[variable] for variable in demo), (demo, other)
+    errors = run_with_answers(_with_student(_exercises(lesson), OTHER_ID, tmp_path), demo)
+    for variable in demo:
+        assert "AssertionError" in errors[variable], errors[variable]
+        assert "not answered yet" not in errors[variable]
+
+
+NOTEBOOKS = [_exercises(n) for n in VARIED] + [solutions_path(_exercises(n)) for n in VARIED]
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: f"{p.parent.parent.name}/{p.parent.name}")
+def test_one_student_id_cell_feeds_the_variant(path):
+    """The contract the answer key and the release rely on."""
+    cells = read_notebook(path).cells
+    tagged = [c for c in cells if "student-id" in c.metadata.get("tags", [])]
+    assert len(tagged) == 1
+    (statement,) = ast.parse(tagged[0].source).body
+    assert isinstance(statement, ast.Assign) and statement.targets[0].id == "student_id"
+    assert statement.value.value == "demo"
+    code = "\n".join(c.source for c in cells if c.cell_type == "code")
+    assert f'rc.Variant(student_id, "{path.parent.name}")' in code
+    assert code.index("student_id =") < code.index("rc.Variant(")
+
+
+def test_lesson_1_has_no_per_student_numbers():
+    cells = read_notebook(_exercises("01_homogeneous_transforms")).cells
+    assert not [c for c in cells if "student-id" in c.metadata.get("tags", [])]
+
+
+def test_the_demo_id_draws_the_numbers_the_exercises_always_had():
+    """The demo student's numbers are the classic ones (the diagnosis corpus's references)."""
+    assert _drawn("02_elementary_transforms", "demo")["q1"] == 0.5
+    chain = _drawn("03_composing_a_chain", "demo")
+    assert np.allclose(np.degrees(chain["q_4"]), [90, 0, -90]) and chain["h"] == 50
+    scara = _drawn("04_module_method_classic_arms", "demo")["q_4"]
+    assert np.allclose(np.degrees(scara[:2]), [90, -90]) and scara[2] == -5
 
 
 @pytest.mark.parametrize(("lesson", "variable"), _cases())

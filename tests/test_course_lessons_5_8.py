@@ -7,21 +7,52 @@ and numeric judge with a tolerance of 0.1 % (0.001 near 0): a velocity
 (``rc.assert_vector``), finite-difference spikes (``rc.assert_value``), the singular
 joint values (``rc.assert_set``, modulo 2π) and an elbow angle (``rc.assert_angle``), each
 with the exercise's own hint. So rounded numbers (3.1416 for π, 1.5708 for π/2), text
-answers (``"[pi, 0]"``) and answers a whole turn away pass. Each notebook runs once with
-every answer replaced by a wrong one and once as the solutions; lessons 7 and 8 run twice
-more with rounded and text answers and once more with other typical mistakes.
+answers (``"[pi, 0]"``) and answers a whole turn away pass.
+
+The numeric exercises draw their numbers from the student id (``rc.Variant``, typed in
+the one cell tagged ``student-id``); the symbolic ones stay the same for everyone. The
+wrong answers are written with the notebook's own numbers, so they hold for any id.
+Each notebook runs once with every answer replaced by a wrong one and once as the
+solutions; lessons 7 and 8 run once more with rounded and text answers, once with
+another student's own numbers typed in that student's notebook (they pass), once with
+the demo student's numbers in that notebook (they fail: the numbers follow the id) and
+once more with other typical mistakes. The drawn numbers are read by running a
+notebook's other cells here, without a kernel.
 """
 
 from __future__ import annotations
 
+import ast
+import contextlib
 import functools
+import io
+from typing import Any
 
+import nbformat
 import numpy as np
 import pytest
 
 import robotconf as rc
 
-from .course_support import COURSE, exercise_cells, run_with_answers, solutions_path
+from .course_support import (
+    COURSE,
+    exercise_cells,
+    read_notebook,
+    run_with_answers,
+    solutions_path,
+)
+
+OTHER_ID = "s1234567"
+
+# lesson folder -> the exercises whose numbers follow the student id
+VARIED: dict[str, tuple[str, ...]] = {
+    "05_denavit_hartenberg": ("answer_3", "answer_5"),
+    "06_real_arms": ("answer_1", "answer_2"),
+    "07_velocity_acceleration": ("answer_2", "answer_3", "answer_4", "answer_5"),
+    "08_workspace_singularities": ("answer_1", "answer_4"),
+}
+# The lessons whose tests run another student's notebook.
+SECOND_STUDENT = ("07_velocity_acceleration", "08_workspace_singularities")
 
 # lesson folder -> {answer variable: (code of the wrong answer cell, words the hint must contain)}
 WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
@@ -38,9 +69,9 @@ WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
             ' [0, 1, 0, 0.5], [0, 0, 0, 1]]"',
             "You used the standard DH convention",
         ),
-        # 30 (degrees) fed to cos and sin as if it were radians
+        # the angle in degrees fed to cos and sin as if it were radians
         "answer_3": (
-            "answer_3 = np.round(rc.dh_matrix(30, 0, 2, 0), 4)",
+            "answer_3 = np.round(rc.dh_matrix(np.degrees(q1_3), 0, a_3, 0), 4)",
             "angles in degrees fed to sin and cos",
         ),
         # the offset d = 20 of the first row forgotten
@@ -50,17 +81,24 @@ WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
             "The link offset d of A1",
         ),
         # the same mistake in a position: the column height d1 = 20 missing
-        "answer_5": ("answer_5 = [0, 30, 40]", "The link offset d of A1"),
+        "answer_5": (
+            "reach = 30 * np.cos(q_5[1]) + 40 * np.cos(q_5[1] + q_5[2])\n"
+            "answer_5 = [np.cos(q_5[0]) * reach, np.sin(q_5[0]) * reach,"
+            " -30 * np.sin(q_5[1]) - 40 * np.sin(q_5[1] + q_5[2])]",
+            "The link offset d of A1",
+        ),
     },
     "06_real_arms": {
-        # calculator in radian mode with 30 typed in
+        # calculator in radian mode with the degrees typed in
         "answer_1": (
-            "answer_1 = np.round(rc.dh_matrix(30, 0, 0.4318, 0), 4)",
+            "answer_1 = np.round(rc.dh_matrix(np.degrees(q2_1), 0, 0.4318, 0), 4)",
             "angles in degrees fed to sin and cos",
         ),
-        # the flange offset d6 forgotten
+        # the flange offset d6 forgotten: y = -d4 at q = 0, then turned by q1
         "answer_2": (
-            "answer_2 = [-0.81725, -0.10915, -0.005491]",
+            "x0, y0 = -0.81725, -0.10915\n"
+            "answer_2 = [np.cos(q1_2) * x0 - np.sin(q1_2) * y0,"
+            " np.sin(q1_2) * x0 + np.cos(q1_2) * y0, -0.005491]",
             "The link offset d of A6",
         ),
         # A2·A1 instead of A1·A2
@@ -86,20 +124,27 @@ WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
             "The whole matrix is transposed",
         ),
         # y × (p − o3) taken as +40 along z
-        "answer_2": ("answer_2 = [0, 35, 40]", "The sign of z is wrong."),
+        "answer_2": ("answer_2 = [0, 70 * qd_2[0], 40 * qd_2[2]]", "The sign of z is wrong."),
         # the columns of joints 2 and 3 exchanged
         "answer_3": (
-            "answer_3 = [[0, 40, 40], [30, 0, 0], [0, 0, -30]]",
+            "s, c = np.sin(q3_3), np.cos(q3_3)\n"
+            "answer_3 = [[0, -40 * s, -40 * s], [30 + 40 * c, 0, 0], [0, -40 * c, -30 - 40 * c]]",
             "Columns 2 and 3 are swapped",
         ),
         # the slope of the ramp instead of the finite difference across the jump
         "answer_4": ("answer_4 = 1.0", "central difference (q[k+1] - q[k-1]) / (2 dt)"),
         # the central difference when Simulink's backward one was asked
-        "answer_5": ("answer_5 = -99.0", "backward difference (q[k] - q[k-1]) / dt"),
+        "answer_5": (
+            "answer_5 = (dt - (2 - dt)) / (2 * dt)",
+            "backward difference (q[k] - q[k-1]) / dt",
+        ),
     },
     "08_workspace_singularities": {
         # the Jacobian written with one row per joint
-        "answer_1": ("answer_1 = [[0, 2], [0, 1]]", "The whole matrix is transposed"),
+        "answer_1": (
+            "answer_1 = [[-2 * np.sin(q1_1), 2 * np.cos(q1_1)], [-np.sin(q1_1), np.cos(q1_1)]]",
+            "The whole matrix is transposed",
+        ),
         # det J with the wrong sign
         "answer_2": ('answer_2 = "[[-2*sin(q2)]]"', "sign error"),
         # the singular angles in degrees
@@ -113,46 +158,94 @@ WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
 MORE_WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
     "07_velocity_acceleration": {
         # the velocity in m/s·1000: mm and m mixed up
-        "answer_2": ("answer_2 = [0, 0.035, -0.04]", "1000 times too small"),
+        "answer_2": ("answer_2 = [0, 0.07 * qd_2[0], -0.04 * qd_2[2]]", "1000 times too small"),
         # q[k-1] - q[k+1]: the difference the wrong way round
-        "answer_4": ("answer_4 = 99", "has the wrong sign"),
-        # the jump not divided by dt
-        "answer_5": ("answer_5 = -1.99", "100 times too small"),
+        "answer_4": ("answer_4 = ((2 - dt) - dt) / (2 * dt)", "has the wrong sign"),
+        # the jump not divided by dt (the demo's dt = 0.01: 100 times too small)
+        "answer_5": ("answer_5 = 0 - (2 - dt)", "100 times too small"),
     },
     "08_workspace_singularities": {
         # only the stretched arm
         "answer_3": ("answer_3 = [0]", "1 is missing: the arm folded"),
-        # arccos(-3/4) in degrees
-        "answer_4": ("answer_4 = 138.59", "You gave degrees: write q3 in radians"),
+        # the angle in degrees
+        "answer_4": (
+            "answer_4 = np.degrees(np.arccos(-30 * np.cos(q2_4) / 40) - q2_4)",
+            "You gave degrees: write q3 in radians",
+        ),
     },
 }
 
-# Right answers as students type them: rounded, as text, in another order, a turn away.
-# Lessons run once per variant.
-APPROXIMATE_ANSWERS: dict[str, list[dict[str, str]]] = {
-    "07_velocity_acceleration": [
-        {
-            "answer_2": 'answer_2 = "[0, 35, -40]"',
-            "answer_4": 'answer_4 = "(0.01 - 1.99) / (2 * 0.01)"',
-            "answer_5": "answer_5 = -199.1",  # within 0.1 % of -199
-        },
-        {
-            "answer_2": "answer_2 = np.array([[0.0], [35.0], [-40.02]])",  # a column, rounded
-            "answer_4": 'answer_4 = "-99"',
-            "answer_5": 'answer_5 = "-1.99 / 0.01"',
-        },
-    ],
-    "08_workspace_singularities": [
-        {
-            "answer_3": 'answer_3 = "[3.1416, 0]"',  # π rounded, larger first, as text
-            "answer_4": "answer_4 = 2.4189",  # arccos(-3/4) rounded
-        },
-        {
-            "answer_3": "answer_3 = [2 * np.pi, 3.1416]",  # 0 given as a full turn
-            "answer_4": 'answer_4 = "2.4189 - 2*pi"',  # the same angle, a turn back
-        },
-    ],
+# Right answers as students type them: rounded, as text, a turn away; written with the
+# notebook's own numbers (the demo student's).
+APPROXIMATE_ANSWERS: dict[str, dict[str, str]] = {
+    "07_velocity_acceleration": {
+        "answer_2": 'answer_2 = f"[0, {70 * qd_2[0]:g}, {-40 * qd_2[2]:g}]"',
+        "answer_4": 'answer_4 = f"({dt:g} - {2 - dt:g}) / (2 * {dt:g})"',
+        "answer_5": "answer_5 = (dt - 2) / dt * 1.0005",  # 0.05 % off
+    },
+    "08_workspace_singularities": {
+        "answer_3": 'answer_3 = "[3.1416, 0]"',  # π rounded, larger first, as text
+        "answer_4": "answer_4 = round(float(np.arccos(-30 * np.cos(q2_4) / 40) - q2_4), 4)",
+    },
 }
+
+
+@functools.cache
+def _drawn(lesson: str, student: str) -> dict[str, Any]:
+    """The numbers a student's exercises notebook works with, by variable name.
+
+    The notebook's code cells run here (no kernel), the student-id cell set to
+    ``student``, without the answer and check cells.
+    """
+    namespace: dict[str, Any] = {}
+    with np.printoptions(), contextlib.redirect_stdout(io.StringIO()):
+        for cell in read_notebook(_exercises(lesson)).cells:
+            tags = set(cell.metadata.get("tags", []))
+            if cell.cell_type != "code" or tags & {"answer", "check"}:
+                continue
+            source = f"student_id = {student!r}" if "student-id" in tags else cell.source
+            exec(compile(source, f"{lesson} ({student})", "exec"), namespace)  # our notebook
+    return namespace
+
+
+def _rounded(values: Any, decimals: int) -> list:
+    return np.round(np.asarray(values, dtype=float), decimals).tolist()
+
+
+def _typed_answers(lesson: str, student: str) -> dict[str, str]:
+    """A student's right answers as they would type them: numbers, text, rounded.
+
+    Computed here, by hand-style formulas, from the numbers the student's notebook draws.
+    """
+    d = _drawn(lesson, student)
+    if lesson == "07_velocity_acceleration":
+        qd1, qd3, dt = d["qd_2"][0], d["qd_2"][2], d["dt"]
+        s, c = np.sin(d["q3_3"]), np.cos(d["q3_3"])
+        jacobian = [[0, -40 * s, -40 * s], [30 + 40 * c, 0, 0], [0, -30 - 40 * c, -40 * c]]
+        return {
+            "answer_2": f"answer_2 = np.array([[0.0], [{70 * qd1:.3f}], [{-40 * qd3:.3f}]])",
+            "answer_3": f"answer_3 = {_rounded(jacobian, 3)}",
+            "answer_4": f'answer_4 = "{(2 * dt - 2) / (2 * dt):.6g}"',
+            "answer_5": f'answer_5 = "-{2 - dt:g} / {dt:g}"',
+        }
+    q1, q2 = d["q1_1"], d["q2_4"]  # lesson 8
+    q3 = np.arccos(-30 * np.cos(q2) / 40) - q2
+    jacobian = [[-2 * np.sin(q1), -np.sin(q1)], [2 * np.cos(q1), np.cos(q1)]]
+    return {
+        "answer_1": f"answer_1 = {_rounded(jacobian, 4)}",
+        "answer_3": "answer_3 = [2 * np.pi, 3.1416]",  # 0 given as a full turn; the same for all
+        "answer_4": f'answer_4 = "{q3:.4f} - 2*pi"',  # the same angle, a turn back
+    }
+
+
+def _with_student(path, student_id: str, folder):
+    """A copy of the notebook whose student-id cell holds ``student_id``."""
+    notebook = read_notebook(path)
+    (cell,) = [c for c in notebook.cells if "student-id" in c.metadata.get("tags", [])]
+    cell.source = f"student_id = {student_id!r}"
+    copy = folder / f"{path.parent.name}-{student_id}.ipynb"
+    nbformat.write(notebook, str(copy))
+    return copy
 
 
 def _lessons() -> list[str]:
@@ -194,14 +287,60 @@ def test_solutions_pass_their_checks(lesson):
     assert errors and not any(errors.values()), errors
 
 
-@pytest.mark.parametrize(
-    ("lesson", "variant"),
-    [(lesson, i) for lesson, variants in APPROXIMATE_ANSWERS.items() for i in range(len(variants))],
-)
-def test_rounded_and_text_answers_pass(lesson, variant):
-    answers = APPROXIMATE_ANSWERS[lesson][variant]
+@pytest.mark.parametrize("lesson", sorted(APPROXIMATE_ANSWERS))
+def test_rounded_and_text_answers_pass(lesson):
+    answers = APPROXIMATE_ANSWERS[lesson]
     errors = run_with_answers(_exercises(lesson), answers)
     assert all(errors[variable] == "" for variable in answers), errors
+
+
+@pytest.mark.parametrize("lesson", SECOND_STUDENT)
+def test_another_student_passes_with_their_own_numbers_typed_or_rounded(lesson, tmp_path):
+    answers = _typed_answers(lesson, OTHER_ID)
+    errors = run_with_answers(_with_student(_exercises(lesson), OTHER_ID, tmp_path), answers)
+    assert all(errors[variable] == "" for variable in answers), errors
+
+
+@pytest.mark.parametrize("lesson", SECOND_STUDENT)
+def test_the_demo_students_numbers_fail_for_another_student(lesson, tmp_path):
+    demo = {v: _typed_answers(lesson, "demo")[v] for v in VARIED[lesson]}
+    other = _typed_answers(lesson, OTHER_ID)
+    assert all(demo[variable] != other[variable] for variable in demo), (demo, other)
+    errors = run_with_answers(_with_student(_exercises(lesson), OTHER_ID, tmp_path), demo)
+    for variable in demo:
+        assert "AssertionError" in errors[variable], errors[variable]
+        assert "not answered yet" not in errors[variable]
+
+
+NOTEBOOKS = [_exercises(n) for n in VARIED] + [solutions_path(_exercises(n)) for n in VARIED]
+
+
+@pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: f"{p.parent.parent.name}/{p.parent.name}")
+def test_one_student_id_cell_feeds_the_variant(path):
+    """The contract the answer key and the release rely on."""
+    cells = read_notebook(path).cells
+    tagged = [c for c in cells if "student-id" in c.metadata.get("tags", [])]
+    assert len(tagged) == 1
+    (statement,) = ast.parse(tagged[0].source).body
+    assert isinstance(statement, ast.Assign) and statement.targets[0].id == "student_id"
+    assert statement.value.value == "demo"
+    code = "\n".join(c.source for c in cells if c.cell_type == "code")
+    assert f'rc.Variant(student_id, "{path.parent.name}")' in code
+    assert code.index("student_id =") < code.index("rc.Variant(")
+
+
+def test_the_demo_id_draws_the_numbers_the_exercises_always_had():
+    """The demo student's numbers are the classic ones (the diagnosis corpus's references)."""
+    dh = _drawn("05_denavit_hartenberg", "demo")
+    assert dh["a_3"] == 2 and np.isclose(np.degrees(dh["q1_3"]), 30)
+    assert np.allclose(np.degrees(dh["q_5"]), [90, 0, -90])
+    arms = _drawn("06_real_arms", "demo")
+    assert np.isclose(np.degrees(arms["q2_1"]), 30) and arms["q1_2"] == 0
+    velocity = _drawn("07_velocity_acceleration", "demo")
+    assert velocity["qd_2"] == [0.5, 0, 1.0] and velocity["dt"] == 0.01
+    assert np.isclose(np.degrees(velocity["q3_3"]), -90)
+    singular = _drawn("08_workspace_singularities", "demo")
+    assert singular["q1_1"] == 0 and singular["q2_4"] == 0
 
 
 @pytest.mark.parametrize("lesson", sorted(MORE_WRONG_ANSWERS))
