@@ -18,7 +18,7 @@ from robotconf.panel._images import download_link
 from .test_panel_hostile import SCRIPT, hostile_robot
 from .test_panel_support import make_panel
 
-FILES_TAB = 3
+FILES_TAB = 4
 
 
 def link_content(link: str) -> tuple[str, bytes]:

@@ -60,7 +60,7 @@ def last_command(scene: Scene, kind: str, path: str) -> dict[str, Any]:
 
 def test_the_reach_tab_sits_after_matrices() -> None:
     panel = reach_panel(rc.preset("planar_2r"))
-    assert panel.results.titles == ("Motion", "Matrices", "Reach", "Save / Load")
+    assert panel.results.titles == ("Motion", "Matrices", "Reach", "Program", "Save / Load")
     assert panel.results.children[REACH_TAB] is panel.reach.widget
 
 

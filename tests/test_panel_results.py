@@ -161,5 +161,5 @@ def test_the_view_column_sticks_and_the_results_are_below_it():
     assert VIEW_CLASS in panel.view._dom_classes
     assert panel.scene.widget in panel.view.children and panel.ee_label in panel.view.children
     assert "position: sticky" in STYLE and ".jp-OutputArea-output:has" in STYLE
-    assert panel.results.titles == ("Motion", "Matrices", "Reach", "Save / Load")
+    assert panel.results.titles == ("Motion", "Matrices", "Reach", "Program", "Save / Load")
     assert panel.widget.children[-1] is panel.results

@@ -20,6 +20,7 @@ from .._errors import InvalidInputError
 from ..kinematics import DHLink, Robot
 from ..motion import Motion
 from ..presets import preset
+from ..programs import Program
 from ._app_mode import app_mode
 from ._atomic_file import write_atomically
 from ._binding import FileBinding, bound_path
@@ -35,12 +36,15 @@ from ._matrices_view import MatricesView, end_effector_text
 from ._module_list import ModuleList
 from ._motion_section import MotionSection
 from ._preset_menu import PresetMenu
+from ._program_run import show_program_motion
+from ._program_tab import ProgramTab
 from ._ranges import joint_limits, length_scale
 from ._reach_moves import show_coordinates
 from ._reach_tab import ReachTab
 from ._robot_extras import RobotExtras
 from ._scene_slot import default_scene_factory
-from ._setup_io import setup_from, setup_to_json
+from ._setup_io import setup_parts as setup_from  # (robot, signals, simulation, program)
+from ._setup_io import setup_to_json
 from ._undo_buttons import UndoButtons
 from ._units import LENGTH_UNITS, Units
 from ._wizard import Wizard
@@ -50,7 +54,7 @@ __all__ = ["Configurator", "configurator"]
 _MODES = (("Modules", "modules"), ("DH table", "dh"), ("Guided", "wizard"))
 #: The result tabs under the editor and the 3D view (the view is no tab: it stays in
 #: sight). Motion first: the matrices' symbolic view is computed only while it shows.
-_MOTION_TAB, _MATRICES_TAB, _REACH_TAB, _FILES_TAB = range(4)
+_MOTION_TAB, _MATRICES_TAB, _REACH_TAB, _PROGRAM_TAB, _FILES_TAB = range(5)
 
 
 def _default_robot() -> Robot:
@@ -129,6 +133,8 @@ class Configurator:
         pinned while the editor scrolls (``robotconf/panel/_layout.py``).
     reach : ReachTab
         The Reach tab: a target the robot follows by inverse kinematics.
+    program_tab : ProgramTab
+        The Program tab: PTP/LIN/CIRC/Wait moves taught, checked and run.
     errors : dict
         Control key → message of every input the core refused right now.
 
@@ -236,14 +242,25 @@ class Configurator:
         self.reach = ReachTab(
             lambda: self._robot, self._reach_to, self.history, self.scene, self.units
         )
+        self.program_tab = ProgramTab(
+            lambda: self._robot,
+            self.scene,
+            self.units,
+            show_motion=lambda m: show_program_motion(self.motion_section, self.scene, m),
+            open_motion=lambda: setattr(self.results, "selected_index", _MOTION_TAB),
+            on_change=self.binding.changed,
+            dt=dt,
+            app=self.app,
+        )
         self.results = widgets.Tab(
             children=[
                 self.motion_section.widget,
                 self.matrices.widget,
                 self.reach.widget,
+                self.program_tab.widget,
                 self.files.widget,
             ],
-            titles=("Motion", "Matrices", "Reach", "Save / Load"),
+            titles=("Motion", "Matrices", "Reach", "Program", "Save / Load"),
         )
         self._editor_box = widgets.VBox()
         self.view = view_column([self.ee_label, self.scene.widget])
@@ -283,8 +300,9 @@ class Configurator:
         observe(self.results, self.matrices.error, self._tab_changed, "selected_index")
         self.matrices.set_visible(False)
         self._load_robot(robot, first=True)
-        if saved is not None:
+        if saved is not None and file is not None:  # a bound file: its setup, program too
             self.motion_section.load(saved[1], saved[2])
+            self.program_tab.load(setup_from(file)[3])
         self.binding.start()
 
     # -- public -------------------------------------------------------------------------
@@ -298,6 +316,11 @@ class Configurator:
     def motion(self) -> Motion | None:
         """The last simulation, or ``None`` before the first successful Run."""
         return self.motion_section.motion
+
+    @property
+    def program(self) -> Program | None:
+        """The Program tab's last valid program (``None`` while its table is empty)."""
+        return self.program_tab.program
 
     @property
     def units(self) -> Units:
@@ -324,13 +347,14 @@ class Configurator:
         self.history.redo()
 
     def to_json(self) -> str:
-        """The robot, the signals and the time settings as the core's JSON text."""
+        """The robot, the signals, the time settings and the program as the core's JSON."""
         signals = self.motion_section.signals()
         if signals is None:
             raise InvalidInputError(
                 "signals", "invalid", "valid signals: fix the one marked in red first"
             )
-        return setup_to_json(self._robot, signals, self.motion_section.settings())
+        program = self.program_tab.saved_program(self._robot)
+        return setup_to_json(self._robot, signals, self.motion_section.settings(), program)
 
     def save(self, path: str | os.PathLike[str]) -> None:
         """Write :meth:`to_json` to ``path`` (UTF-8, the file replaced in one step)."""
@@ -341,16 +365,19 @@ class Configurator:
             write_atomically(path, text)
 
     def load(self, path: str | os.PathLike[str]) -> None:
-        """Load a robot with its signals and time settings from a JSON file."""
+        """Load a robot with its signals, time settings and program from a JSON file."""
         self._apply_setup(*setup_from(Path(path)))
 
     def _load_bytes(self, content: bytes) -> None:
         self._apply_setup(*setup_from(content))
 
-    def _apply_setup(self, robot: Robot, signals: dict, simulation: dict | None) -> None:
+    def _apply_setup(
+        self, robot: Robot, signals: dict, simulation: dict | None, program: Program | None
+    ) -> None:
         with self.binding.batch():  # the bound file gets the whole setup, once
             self.set_robot(robot)
             self.motion_section.load(signals, simulation)
+            self.program_tab.load(program)
 
     def _repr_mimebundle_(self, **kwargs: Any) -> Any:
         bundle = self.widget._repr_mimebundle_(**kwargs)
@@ -472,6 +499,7 @@ class Configurator:
         self.matrices.show(robot)
         self.exports.show(robot)
         self.reach.show(robot)
+        self.program_tab.show(robot, order)
         self._show_end_effector()
         if record:
             self.history.record(robot, coalesce, None if order is None else list(order))
@@ -515,6 +543,7 @@ class Configurator:
         """Every view in the units now chosen; the robot and the signals stay as they are."""
         self.motion_section.set_units(self.units)
         self.reach.set_units(self.units)
+        self.program_tab.set_units(self.units)
         self._show_end_effector()
 
     def _show_end_effector(self) -> None:
@@ -551,6 +580,7 @@ class Configurator:
         self.matrices.set_visible(change["new"] == _MATRICES_TAB)
         self.files.set_visible(change["new"] == _FILES_TAB)
         self.reach.set_visible(change["new"] == _REACH_TAB)
+        self.program_tab.set_visible(change["new"] == _PROGRAM_TAB)
 
     def _animate(self, motion: Motion) -> None:
         animate = getattr(self.scene, "animate", None)
@@ -572,6 +602,7 @@ class Configurator:
         yield from self.motion_section.error_items()
         yield from self.files.error_items()
         yield from self.reach.error_items()
+        yield from self.program_tab.error_items()
         yield from self.binding.error_items()
 
 

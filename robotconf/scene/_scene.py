@@ -35,6 +35,7 @@ from ._ghosts import Ghosts
 from ._labels import check_label_mode, label_digits, label_rows, merge_coincident
 from ._playback import _ANIMATION_KEYS, ROBOT, Playback
 from ._shown import Shown
+from ._taught_points import TaughtPoints
 
 __all__ = ["Scene", "view"]
 
@@ -47,11 +48,12 @@ RESIZE_FACTOR = 2.0
 LABEL_SPACING = 0.25
 
 
-class Scene(Ghosts, Playback):
+class Scene(Ghosts, Playback, TaughtPoints):
     """A robot drawn in meshcat's three.js viewer inside the notebook.
 
     Inverse kinematics draws beside it: :meth:`show_ghosts` (faint copies at other
-    coordinates) and :meth:`show_target` (a target marker), see ``_ghosts.py``.
+    coordinates) and :meth:`show_target` (a target marker), see ``_ghosts.py``; a robot
+    program's taught points with :meth:`show_taught_points` (``_taught_points.py``).
 
     Parameters
     ----------
