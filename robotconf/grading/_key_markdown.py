@@ -25,6 +25,9 @@ _KINDS = {
     "set": "set of values (any order)",
     "interval": "interval [lo, hi]",
     "dh_table": "DH table: θ offset, d offset, a, α, joint (q adds to θ for R, to d for P)",
+    "ik_solution": "target: any joint values whose end effector reaches it pass",
+    "ik_solutions": "target: every closed-form solution for it, any order, is wanted",
+    "profile": "motion-profile values",
 }
 
 

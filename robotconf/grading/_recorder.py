@@ -2,7 +2,8 @@
 
 The course's check cells call a checker: ``rc.assert_matrix``, ``rc.assert_vector``,
 ``rc.assert_value``, ``rc.assert_angle``, ``rc.assert_set``, ``rc.assert_interval``,
-``rc.assert_dh_table`` or their ``check_*`` forms (course README, "How the exercises
+``rc.assert_dh_table``, ``rc.assert_ik_solution(s)``, ``rc.assert_profile`` or their
+``check_*`` forms (course README, "How the exercises
 are built"). To grade per entry or to read the expected value for an answer key, the
 grading tools need each call's verdict, whatever else the cell does. So for the
 duration of a block every checker is replaced, in ``robotconf`` (the ``rc`` of a
@@ -33,6 +34,9 @@ CHECKERS = {
     "set": ("check_set", "assert_set"),
     "interval": ("check_interval", "assert_interval"),
     "dh_table": ("check_dh_table", "assert_dh_table"),
+    "ik_solution": ("check_ik_solution", "assert_ik_solution"),
+    "ik_solutions": ("check_ik_solutions", "assert_ik_solutions"),
+    "profile": ("check_profile", "assert_profile"),
 }
 
 # Taken before any twin is installed; a checker this version lacks is left out.
@@ -66,7 +70,8 @@ class CheckCall:
     student : object
         The answer as handed to the checker.
     expected : object
-        The reference as handed to the checker.
+        The reference as handed to the checker (for the IK checks, which take a robot
+        and a target, the tuple ``(robot, target)``).
     options : dict
         Keyword options (``tol``, ``samples``, ...).
     result : MatrixCheck, AnswerCheck or DHTableCheck
@@ -120,25 +125,32 @@ class CheckRecorder:
             return {}
         check, raise_ = _ORIGINALS[check_name], _ORIGINALS[assert_name]
 
-        def checked(student: Any, expected: Any, options: dict[str, Any], asserted: bool) -> Any:
-            result = check(student, expected, **options)
-            call = CheckCall(self.label, kind, student, expected, options, result, asserted)
+        def checked(
+            student: Any,
+            expected: Any,
+            rest: tuple[Any, ...],
+            options: dict[str, Any],
+            asserted: bool,
+        ) -> Any:
+            result = check(student, expected, *rest, **options)
+            reference = (expected, *rest) if rest else expected
+            call = CheckCall(self.label, kind, student, reference, options, result, asserted)
             self.calls.append(call)
             return call
 
         @functools.wraps(check)
-        def check_twin(student: Any, expected: Any, **options: Any) -> Any:
+        def check_twin(student: Any, expected: Any, *rest: Any, **options: Any) -> Any:
             __tracebackhide__ = True  # noqa: F841 (read by IPython and pytest)
-            return checked(student, expected, options, False).result
+            return checked(student, expected, rest, options, False).result
 
         @functools.wraps(raise_)
-        def assert_twin(student: Any, expected: Any, **options: Any) -> Any:
+        def assert_twin(student: Any, expected: Any, *rest: Any, **options: Any) -> Any:
             __tracebackhide__ = True  # noqa: F841
-            call = checked(student, expected, options, True)
+            call = checked(student, expected, rest, options, True)
             if call.result.ok:
                 return call.result
             try:
-                raise_(student, expected, **options)  # raises the checker's own message
+                raise_(student, expected, *rest, **options)  # the checker's own message
             except AssertionError as error:
                 self.raised = (call, error)
                 raise

@@ -22,6 +22,9 @@ Answers that are not matrices (same parser and numeric judge, 0.1 % tolerance)
 Inverse-kinematics answers (judged by forward kinematics: any solution passes)
     :func:`check_ik_solution`, :func:`check_ik_solutions`, :func:`assert_ik_solution`,
     :func:`assert_ik_solutions`, :class:`IKCheck`
+Motion-profile answers (a trapezoid's times, a duration, peaks, coefficients, samples)
+    :func:`check_profile`, :func:`assert_profile`, :class:`ProfileTask`,
+    :data:`PROFILE_DIAGNOSES`, :data:`PROFILE_FORMS`
 DH tables (judged by the robot they describe: joint axes and end-effector at seeded q)
     :func:`check_dh_table`, :func:`assert_dh_table`, :class:`DHTableCheck`,
     :func:`parse_dh_rows`
@@ -56,6 +59,10 @@ from ._ik_answers import assert_ik_solution, check_ik_solution
 from ._ik_answers_result import IK_DIAGNOSES, IKCheck
 from ._ik_answers_sets import assert_ik_solutions, check_ik_solutions
 from ._mistakes import ROTATION_PATTERN, Candidate, generic_candidates, is_rotation_like
+from ._profile_checks import assert_profile, check_profile
+from ._profile_checks_forms import PROFILE_FORMS
+from ._profile_checks_slips import PROFILE_DIAGNOSES
+from ._profile_checks_task import ProfileTask
 from ._step import DerivationStep
 from ._student_parser import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
 from ._symbolic import (
@@ -122,6 +129,12 @@ __all__ = [
     "assert_ik_solutions",
     "IKCheck",
     "IK_DIAGNOSES",
+    # motion-profile answers
+    "check_profile",
+    "assert_profile",
+    "ProfileTask",
+    "PROFILE_DIAGNOSES",
+    "PROFILE_FORMS",
     # DH tables
     "check_dh_table",
     "assert_dh_table",
