@@ -67,7 +67,7 @@ def test_a_violation_is_written_into_the_report(tmp_path, capsys):
     summary = (out / "report.md").read_text()
     s = "s" * (len(found) != 1)
     assert f"Check: {len(found)} violation{s}:" in summary
-    assert "- move 1: " in summary and "q3" in summary
+    assert "- move 1 (PTP): " in summary and "q3" in summary
 
 
 def test_signals_cannot_be_mixed_with_the_program(tmp_path, capsys):

@@ -101,7 +101,7 @@ WRONG_A = {
         "]",
         "Each joint got its own duration",
     ),
-    "answer_5": ("answer_5 = [1, 3]", "Move 1 is a PTP"),
+    "answer_5": ("answer_5 = [1, 3]", "moves_5[1] is a PTP"),
     "answer_6": (  # joint 1's speed
         "c2 = (x_star**2 - l1**2 - l2**2) / (2 * l1 * l2)\n"
         "q2 = np.arccos(c2)\n"
@@ -128,7 +128,7 @@ WRONG_B = {
         ")",
         "is not the slowest joint",
     ),
-    "answer_5": ("answer_5 = [4]", "counts the moves from 0"),
+    "answer_5": ("answer_5 = [4]", "Give indices from 0"),
 }
 
 # Right answers written another way, run under OTHER_ID (the rest keep the solution's code).

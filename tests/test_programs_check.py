@@ -48,7 +48,7 @@ def test_lin_through_the_shoulder_axis_is_reported_as_a_singularity(paper):
     assert abs(singular.worst_time - (lin.start + T / 2)) <= DT
     assert lin.start < singular.time < singular.worst_time
     assert singular.value < 1e-3 and "singular" in singular.message
-    assert singular.message.startswith("move 1 (LIN):")
+    assert singular.message.startswith("move 2 (LIN):")
     with pytest.warns(UserWarning, match="near a singularity"):
         prog.simulate(dt=DT)
 

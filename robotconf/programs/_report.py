@@ -56,7 +56,8 @@ class Violation:
     kind : str
         One of :data:`VIOLATIONS`.
     move : int
-        The move's index in the program.
+        The move's index in the program, from 0 (the message counts from 1: "move 2" is
+        index 1).
     time : float
         The first sample time where it happens (s).
     joint : str or None
@@ -179,7 +180,8 @@ class _Collector:
             worst = int(rows[pick])
             first = int(rows[0])
             value = float(values[worst])
-            where = f"move {move} ({self.labels[move]})"
+            # Counted from 1 in the text, as a program listing and the panel number them.
+            where = f"move {move + 1} ({self.labels[move]})"
             text = describe(value, float(t[first]), float(t[worst]), first)
             self.found.append(
                 Violation(

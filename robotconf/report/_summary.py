@@ -84,5 +84,5 @@ def _program_lines(motion: Motion, program: Program) -> list[str]:
     found = list(getattr(motion, "report", ()))
     count = f"{len(found)} violation{'s' * (len(found) != 1)}:"
     lines += ["", "Check: " + (count if found else "no violations"), ""]
-    lines += [f"- move {v.move + 1}: {markdown_text(v.message)}" for v in found]
+    lines += [f"- {markdown_text(v.message)}" for v in found]
     return [*lines, ""] if found else lines

@@ -18,6 +18,7 @@ from collections.abc import Iterator
 import numpy as np
 import pytest
 
+from ..course_support import COURSE
 from ..test_lite import site_folder
 from .lab_driver import SOLID_RED_PIXELS, pixels, red_centroid
 
@@ -98,7 +99,9 @@ def test_lab_lists_the_classroom_and_opens_the_configurator(offline, served: str
     page.wait_for_timeout(500)
     course = open_folder(page, "course")
     lessons = {name for name in course if name[:2].isdigit()}
-    assert len(lessons) == 8 and "README.md" in course and "solutions" not in course, course
+    taught = {p.name for p in COURSE.iterdir() if p.is_dir() and p.name[:2].isdigit()}
+    assert lessons == taught and "README.md" in course, course
+    assert "solutions" not in course and "INSTRUCTOR.md" not in course, course
     assert {"lesson.ipynb", "exercises.ipynb"} <= open_folder(page, "01_homogeneous")
 
     page.goto(f"{served}lab/index.html?path=notebooks/configurator.ipynb")
