@@ -17,8 +17,9 @@ import pytest
 
 import robotconf as rc
 from robotconf.inverse_kinematics import ik_all
+from robotconf.kinematics import matrix_from_rpy as rotation_from_rpy
 from robotconf.panel import Configurator
-from robotconf.panel._reach_pose import pose_from_xyz_rpy, rotation_from_rpy, xyz_rpy_from_pose
+from robotconf.panel._reach_pose import pose_from_xyz_rpy, xyz_rpy_from_pose
 from robotconf.scene import RecordingChannel, Scene
 from robotconf.scene._ghosts import GHOSTS, TARGET, TARGET_COLORS
 

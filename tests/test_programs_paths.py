@@ -9,9 +9,10 @@ from __future__ import annotations
 import numpy as np
 import pytest
 
+from robotconf.kinematics import rotation_matrix as exp_rotation
+from robotconf.kinematics import rotation_vector as log_rotation
 from robotconf.presets import preset
 from robotconf.programs import CIRC, LIN, PTP, Program, arc_path, line_path
-from robotconf.programs._rotation import exp_rotation, log_rotation
 
 START_Q = [0.0, 0.3, -0.5]
 

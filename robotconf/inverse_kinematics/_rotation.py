@@ -14,39 +14,17 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["rotation_vector", "rotation_vector_last", "rotation_matrix"]
-
-
-def rotation_vector(rotation: np.ndarray) -> np.ndarray:
-    """Axis × angle of rotation matrices (the matrix logarithm, as a vector).
-
-    Parameters
-    ----------
-    rotation : ndarray, shape (B, 3, 3)
-        Proper rotation matrices.
-
-    Returns
-    -------
-    ndarray, shape (B, 3)
-        ``θ · u`` with ``0 ≤ θ ≤ π`` (radians) and unit axis ``u``; at exactly 180° either
-        of the two equivalent axes.
-
-    Examples
-    --------
-    A quarter turn about z:
-
-    >>> turn = np.array([[[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]]])
-    >>> rotation_vector(turn).round(12) + 0.0
-    array([[0.        , 0.        , 1.57079633]])
-    """
-    return rotation_vector_last(rotation.transpose(1, 2, 0)).T
+__all__ = ["rotation_vector_last"]
 
 
 def rotation_vector_last(rotation: np.ndarray) -> np.ndarray:
-    """:func:`rotation_vector` with the batch last: (3, 3, B) matrices → (3, B) vectors.
+    """:func:`robotconf.kinematics.rotation_vector` with the batch last: (3, 3, B) matrices
+    → (3, B) vectors.
 
     The solver's layout: each entry is a contiguous row over the batch, so every step is
-    one operation over all B (and each matrix gets the same operations whatever B is).
+    one operation over all B (and each matrix gets the same operations whatever B is); it
+    runs in the solver's innermost loop, so it keeps its own copy of the formula, which
+    ``tests/test_ik_numeric.py`` checks against the kinematics' one.
 
     >>> turn = np.array([[0.0, -1.0, 0.0], [1.0, 0.0, 0.0], [0.0, 0.0, 1.0]])
     >>> rotation_vector_last(turn[:, :, np.newaxis])[:, 0].round(12) + 0.0
@@ -94,32 +72,3 @@ def _wide(r: np.ndarray, cos: np.ndarray, skew: np.ndarray, angle: np.ndarray) -
     dot = axis[0] * skew[0] + axis[1] * skew[1] + axis[2] * skew[2]
     axis *= np.where(dot < 0.0, -angle, angle)
     return axis
-
-
-def rotation_matrix(vector: np.ndarray) -> np.ndarray:
-    """Rotation matrices from rotation vectors (Rodrigues' formula).
-
-    Parameters
-    ----------
-    vector : ndarray, shape (B, 3)
-        Axis × angle (radians).
-
-    Returns
-    -------
-    ndarray, shape (B, 3, 3)
-
-    Examples
-    --------
-    >>> v = np.array([[0.3, -1.2, 2.0]])
-    >>> np.allclose(rotation_vector(rotation_matrix(v)), v)
-    True
-    """
-    angle = np.linalg.norm(vector, axis=-1)
-    safe = np.where(angle > 0.0, angle, 1.0)
-    u = vector / safe[:, np.newaxis]
-    k = np.zeros((len(vector), 3, 3))
-    k[:, 0, 1], k[:, 0, 2], k[:, 1, 2] = -u[:, 2], u[:, 1], -u[:, 0]
-    k -= k.transpose(0, 2, 1)
-    s = np.sin(angle)[:, np.newaxis, np.newaxis]
-    c = (1.0 - np.cos(angle))[:, np.newaxis, np.newaxis]
-    return np.eye(3) + s * k + c * (k @ k)

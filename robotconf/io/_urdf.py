@@ -33,8 +33,8 @@ import numpy as np
 
 from .._budget import check_finite_result
 from .._errors import InvalidInputError
-from .._validation import as_float_array, check_finite_number, one_line
-from ..kinematics import JOINT_OF_LETTER, LinkGeometry, link_matrices
+from .._validation import check_finite_number
+from ..kinematics import JOINT_OF_LETTER, LinkGeometry, link_matrices, rpy_from_matrix
 
 if TYPE_CHECKING:  # pragma: no cover
     from ..kinematics import Robot
@@ -54,42 +54,6 @@ END_EFFECTOR_LINK = "end_effector"
 #: Numbers smaller than this print as 0, so that the rounding noise of cos(π/2) does not
 #: clutter the file (1e-15 of a length or angle unit is far below any tolerance).
 ZERO_BELOW = 1e-15
-
-
-def rpy_from_matrix(rotation: Any) -> tuple[float, float, float]:
-    """URDF's roll, pitch, yaw of a rotation matrix: ``R = Rz(yaw)·Ry(pitch)·Rx(roll)``.
-
-    Parameters
-    ----------
-    rotation : array-like, shape (3, 3)
-        A rotation matrix.
-
-    Returns
-    -------
-    (roll, pitch, yaw) : floats, radians
-        With pitch in [−π/2, π/2]; at pitch = ±π/2 (gimbal lock) yaw is set to 0.
-
-    Examples
-    --------
-    >>> c, s = np.cos(0.3), np.sin(0.3)
-    >>> np.round(rpy_from_matrix([[1, 0, 0], [0, c, -s], [0, s, c]]), 12) + 0.0
-    array([0.3, 0. , 0. ])
-    >>> np.round(rpy_from_matrix([[0, 0, 1], [0, 1, 0], [-1, 0, 0]]), 12) + 0.0  # Ry(π/2)
-    array([0.        , 1.57079633, 0.        ])
-    """
-    allowed = "a 3×3 rotation matrix of finite numbers"
-    r = as_float_array(rotation, "rotation", allowed)
-    if r.shape != (3, 3) or not np.isfinite(r).all():
-        raise InvalidInputError(
-            "rotation", one_line(rotation), allowed, problem="expected finite shape (3, 3):"
-        )
-    cos_pitch = math.hypot(r[0, 0], r[1, 0])
-    pitch = math.atan2(-r[2, 0], cos_pitch)
-    if cos_pitch > 1e-12:
-        return (math.atan2(r[2, 1], r[2, 2]), pitch, math.atan2(r[1, 0], r[0, 0]))
-    # Gimbal lock: only roll − yaw (or roll + yaw) is defined; with yaw = 0 the middle
-    # row of Ry(pitch)·Rx(roll) is (0, cos roll, −sin roll).
-    return (math.atan2(-r[1, 2], r[1, 1]), pitch, 0.0)
 
 
 def _parts(g: LinkGeometry | None) -> tuple[np.ndarray, np.ndarray]:

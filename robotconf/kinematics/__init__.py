@@ -13,6 +13,9 @@ Conventions (data, see docs/conventions.md)
     :data:`DH_CONVENTIONS`, :data:`DH_FACTORS`, :func:`dh_formula`, …
 Points, axes and Jacobians
     :func:`robot_points`, :func:`format_point`, :func:`joint_axes`, :func:`jacobian`
+Rotations as three numbers
+    :func:`rotation_vector`, :func:`rotation_matrix` (log and exp maps),
+    :func:`rpy_from_matrix`, :func:`matrix_from_rpy` (URDF's roll, pitch, yaw)
 DH ⇄ modules, workspace
     :func:`dh_to_modules`, :func:`modules_to_dh`, :func:`workspace`, :class:`Workspace`
 Standard ⇄ modified DH
@@ -81,6 +84,7 @@ from ._module import Module, kind_name, transfer_matrix
 from ._names import MAX_NAME_CHARS, check_module_names, check_name
 from ._points import END_EFFECTOR_LABEL, RobotPoint, format_point, robot_points
 from ._robot import Robot, characteristic_length
+from ._rotations import matrix_from_rpy, rotation_matrix, rotation_vector, rpy_from_matrix
 from ._workspace import (
     MAX_WORKSPACE_SAMPLES,
     WORKSPACE_METHODS,
@@ -144,6 +148,10 @@ __all__ = [
     "point_names",
     "JointAxes",
     "joint_axes",
+    "rotation_vector",
+    "rotation_matrix",
+    "rpy_from_matrix",
+    "matrix_from_rpy",
     "jacobian",
     # DH ⇄ modules, workspace
     "dh_to_modules",

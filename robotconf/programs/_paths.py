@@ -22,7 +22,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._rotation import exp_rotation, log_rotation
+from ..kinematics import rotation_matrix, rotation_vector
 
 __all__ = ["CartesianPath", "line_path", "arc_path", "COLLINEAR_TOL"]
 
@@ -95,7 +95,7 @@ class CartesianPath:
     def rotations(self, u: np.ndarray) -> np.ndarray:
         """Orientations ``R(u)``, shape (T, 3, 3)."""
         u = np.asarray(u, dtype=float)
-        return exp_rotation(u[:, np.newaxis] * self.turn) @ self.rotation
+        return rotation_matrix(u[:, np.newaxis] * self.turn) @ self.rotation
 
     def evaluate(
         self, u: np.ndarray, ud: np.ndarray, udd: np.ndarray
@@ -125,7 +125,7 @@ class CartesianPath:
 
 
 def _turn(r0: np.ndarray, r1: np.ndarray) -> np.ndarray:
-    return log_rotation(r1 @ r0.T)
+    return rotation_vector(r1 @ r0.T)
 
 
 def line_path(p0: np.ndarray, p1: np.ndarray, r0: np.ndarray, r1: np.ndarray) -> CartesianPath:
