@@ -1,12 +1,14 @@
-"""Time laws of a rest-to-rest move, computed independently of :mod:`robotconf.programs`.
+"""Time laws of a rest-to-rest move: the right one, and the ones a usual slip gives.
 
 A law is the normalized path parameter ``u(t)`` going from 0 to 1 in ``T`` seconds; a
 joint that moves by ``Δ`` follows ``q(t) = q0 + Δ·u(t)``. The profile checker builds the
 right law of an exercise and the laws a student who made a usual slip would have used
 (the acceleration time doubled, a ramp left out, the cubic for the quintic), and reads
 every kind of answer off them: the trapezoid's times, the duration, the peaks, the
-polynomial's coefficients, the velocity at given times. The formulas are the course's
-(lesson 12, docs/programs.md "Time laws"):
+polynomial's coefficients, the velocity at given times. The right trapezoid and quintic
+are the robot programs' own (:func:`robotconf.programs.trapezoidal`,
+:func:`robotconf.programs.quintic`); the formulas are the course's (lesson 12,
+docs/programs.md "Time laws"):
 
 - trapezoid under ``u̇ ≤ V``, ``|ü| ≤ A``: ``t_a = V/A``, ``T = 1/V + V/A`` when
   ``V²/A ≤ 1``; otherwise a triangle, ``t_a = √(1/A)``, ``T = 2·t_a``, peak ``A·t_a``;
@@ -20,6 +22,8 @@ import math
 from dataclasses import dataclass
 
 import numpy as np
+
+from ..programs import quintic, trapezoidal
 
 __all__ = [
     "LAW_KINDS",
@@ -150,10 +154,12 @@ def optimal_law(kind: str, speed: float, accel: float) -> Law:
     1.0
     """
     if kind == "trapezoidal":
-        if speed * speed <= accel:
-            return Law("trapezoid", 1.0 / speed + speed / accel, speed / accel, speed, accel)
-        blend = math.sqrt(1.0 / accel)
-        return Law("triangle", 2.0 * blend, blend, accel * blend, accel)
+        # The planner's own time law: the right answer is what robot programs run.
+        law = trapezoidal(speed, accel)
+        shape = "trapezoid" if speed * speed <= accel else "triangle"
+        return Law(shape, law.duration, law.blend, law.speed, law.accel)
+    if kind == "quintic":
+        return timed_law(kind, quintic(speed, accel).duration)
     duration = max(PEAK_SPEED[kind] / speed, math.sqrt(PEAK_ACCEL[kind] / accel))
     return timed_law(kind, duration)
 
