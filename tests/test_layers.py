@@ -297,3 +297,34 @@ def test_the_core_imports_only_numpy_at_module_level():
 def test_each_rule_catches_a_planted_import(code, check):
     probe = PACKAGE / "motion" / "_probe.py"  # read as text only; never written
     assert check(_imports(probe, code))
+
+
+#: Inside the panel, the state and its actions are plain values: they import no widget
+#: library and no view of the panel, so every action can be applied and tested alone.
+PANEL_PURE = ("robotconf.panel.state", "robotconf.panel.actions")
+PANEL_PURE_MAY_IMPORT = (*PANEL_PURE, "robotconf.panel._ranges", "robotconf.panel._numbers")
+WIDGET_LIBRARIES = ("ipywidgets", "anywidget", "traitlets", "IPython")
+
+
+def _panel_purity_violations(imports: list[Import]) -> list[str]:
+    wrong = []
+    for imp in imports:
+        if not imp.source.startswith(PANEL_PURE):
+            continue
+        if (
+            imp.target.split(".")[0] in WIDGET_LIBRARIES
+            or imp.target.startswith("robotconf.panel")
+            and not imp.target.startswith(PANEL_PURE_MAY_IMPORT)
+        ):
+            wrong.append(_where(imp))
+    return wrong
+
+
+def test_the_panels_state_and_actions_import_no_widgets_and_no_views():
+    assert _panel_purity_violations(ALL_IMPORTS) == []
+
+
+def test_the_purity_rule_catches_a_planted_import():
+    probe = PACKAGE / "panel" / "actions" / "_probe.py"  # read as text only; never written
+    assert _panel_purity_violations(_imports(probe, "import ipywidgets\n"))
+    assert _panel_purity_violations(_imports(probe, "from ..editor import EditorView\n"))

@@ -12,8 +12,18 @@ The state and the actions
 docs/panel.md describes the state, the actions and the flow of one q move.
 """
 
+from typing import Any
+
 from . import actions, state
-from ._configurator import Configurator, configurator
 from .state import PanelState
 
 __all__ = ["Configurator", "configurator", "PanelState", "actions", "state"]
+
+
+def __getattr__(name: str) -> Any:
+    # The widgets load with the panel itself: the state and the actions need none.
+    if name in ("Configurator", "configurator"):
+        from . import _configurator
+
+        return getattr(_configurator, name)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")

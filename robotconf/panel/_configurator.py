@@ -235,8 +235,15 @@ class Configurator:
         """``{control key: message}`` for every input the panel refused right now, and
         the bound file's trouble (``"file"``)."""
         found = dict(self.feedback.items())
+        refused = self.program_tab.refusal(self._state)
+        if refused is not None:  # the core's word on the Program tab's table
+            found.setdefault(*refused)
         if self.binding.error.message:
             found["file"] = self.binding.error.message
+        if self.files.upload_error.message:
+            found["load"] = self.files.upload_error.message
+        if self._tab_error.message:  # a view that could not draw itself
+            found["panel"] = self._tab_error.message
         return found
 
     @property
@@ -367,38 +374,58 @@ class Configurator:
     # -- drawing ------------------------------------------------------------------------
 
     def _render(self, old: PanelState | None) -> None:
-        """Every view draws itself from the state (each skips what did not change)."""
+        """Every view draws itself from the state (each skips what did not change). A view
+        that fails says so under the tabs; the others still draw."""
         if self._rendering:
             return
         self._rendering = True
+        failures: list[str] = []
         try:
             state, feedback, rev = self._state, self.feedback, str(self._layout)
-            self.header.render(state, feedback, rev)
+            tab = state.view.tab
+
+            def draw(name: str, render: Callable[..., None], *args: Any) -> None:
+                try:
+                    render(*args)
+                except Exception as error:  # one view's bug must not stop the others
+                    LOGGER.exception("drawing the %s failed", name)
+                    failures.append(f"{name}: {failure_message(error)}")
+
+            draw("header", self.header.render, state, feedback, rev)
             if state.wizard is not None:
-                self.wizard.render(state, feedback, rev)
+                draw("guided mode", self.wizard.render, state, feedback, rev)
                 editor = self.wizard.widget
             else:
-                self.editor.render(state, feedback, rev)
+                draw("editor", self.editor.render, state, feedback, rev)
                 editor = self.editor.form
             if self._editor_box.children != (editor,):
                 self._editor_box.children = (editor,)
-            tab = state.view.tab
-            self.motion_tab.render(state, feedback, rev, tab == "motion")
-            self.matrices.render(state, feedback, rev, tab == "matrices")
-            self.reach.render(state, feedback, rev, tab == "reach")
-            self.program_tab.render(state, feedback, rev, tab == "program")
-            self.files.render(state, feedback, rev, tab == "files")
+            for name, view in (
+                ("motion", self.motion_tab),
+                ("matrices", self.matrices),
+                ("reach", self.reach),
+                ("program", self.program_tab),
+                ("files", self.files),
+            ):
+                draw(f"{name} tab", view.render, state, feedback, rev, tab == name)
             extras = NO_EXTRAS
-            if tab == "reach" and state.wizard is None:
-                extras = self.reach.scene_extras(state)
-            elif tab == "program" and state.wizard is None:
-                extras = self.program_tab.scene_extras(state)
-            self.viewport.render(state, extras)
+            if state.wizard is None and tab in ("reach", "program"):
+                view = self.reach if tab == "reach" else self.program_tab
+                try:
+                    extras = view.scene_extras(state)
+                except Exception as error:
+                    LOGGER.exception("drawing the %s tab's points failed", tab)
+                    failures.append(f"{tab} tab: {failure_message(error)}")
+            draw("3D view", self.viewport.render, state, extras)
             index = TABS.index(tab)
             if self.results.selected_index != index:
                 self.results.selected_index = index
         finally:
             self._rendering = False
+        if failures:
+            self._tab_error.show("; ".join(failures))
+        else:
+            self._tab_error.clear()
 
     def _tab_clicked(self, change: dict[str, Any]) -> None:
         if self._rendering or change["new"] is None:

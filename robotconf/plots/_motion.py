@@ -186,12 +186,14 @@ def plot_motion(
     fig.suptitle(f"{motion.robot.name or 'Robot'}: {shown} ({method})", **PLAIN)
     if not single or compare is not None:
         # One legend for the nine panels, beside them: inside one it would hide curves.
-        fig.legend(
+        legend = fig.legend(
             *axes[0, 0].get_legend_handles_labels(),
             loc="outside right upper",
             fontsize=8,
             frameon=False,
         )
+        for entry in legend.get_texts():  # point names come from files: never mathtext
+            entry.set(**PLAIN)
     if note is not None:
         fig.text(0.01, 0.0, note, fontsize=8, wrap=True, va="bottom", ha="left", **PLAIN)
         fig.get_layout_engine().set(rect=(0.0, 0.07, 1.0, 0.93))  # type: ignore[union-attr,call-arg]

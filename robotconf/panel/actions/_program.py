@@ -1,10 +1,12 @@
 """The Program tab: moves added, edited, taught, reordered, deleted; limits; Run.
 
-Every edit gives a new :class:`~robotconf.panel.state.ProgramDraft`, which
-:class:`robotconf.programs.Program` checks for the panel's robot: an edit the core
-refuses (a LIN that goes nowhere, a CIRC whose points lie on one line, a speed ≤ 0) is
-refused with its message and the program stays as it was. (A later change of the robot
-may still make a program it no longer fits; the tab then says which move and why.)
+Every edit gives a new :class:`~robotconf.panel.state.ProgramDraft`. A value a move itself
+refuses (a speed that is no positive number) is refused at once, beside its box. A draft
+the core refuses as a whole for this robot (a LIN that goes nowhere yet, a CIRC whose
+points lie on one line, a target out of reach) is kept, like code being typed: the tab
+names the move and why, ``panel.program`` is ``None`` and the bound file keeps its last
+valid setup until the draft is fixed. (Turning a PTP into a LIN that ends where it
+starts, to edit its end next, must be possible.)
 """
 
 from __future__ import annotations
@@ -39,11 +41,7 @@ ROW_ACTIONS = ("teach", "teach via", "up", "down", "delete")
 
 
 def _checked(state: PanelState, draft: ProgramDraft) -> PanelState:
-    """``state`` with ``draft`` as its program, once the core accepts it for the robot."""
-    try:
-        build(draft, state.robot)
-    except InvalidInputError as error:
-        raise error.within("program") from None
+    """``state`` with ``draft`` as its program (the tab shows what the core says of it)."""
     return state.with_document(program=draft)
 
 
@@ -172,7 +170,10 @@ class RunProgram(Action):
     the run is the panel's last simulation and plays in the 3D view with the trace."""
 
     def apply(self, state: PanelState) -> PanelState:
-        program = build(state.document.program, state.robot)
+        try:
+            program = build(state.document.program, state.robot)
+        except InvalidInputError as error:
+            raise error.within("program") from None
         if program is None:
             from ...programs import Program
 

@@ -271,8 +271,9 @@ class FileBinding:
         assert self.path is not None
         try:
             text = self._save_text()
-        except InvalidInputError:
-            self._status("Changes not saved while an input is invalid (marked in red).")
+        except InvalidInputError as error:
+            # The file keeps its last valid setup until the cause (named here) is fixed.
+            self._status(f"Changes not saved: {html.escape(str(error))}")
             return False
         self._dirty = False
         if text == self._written:

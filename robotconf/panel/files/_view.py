@@ -106,6 +106,8 @@ class FilesView:
         self._figure = figure
         self.app = app
         self._state: PanelState | None = None
+        self._feedback: Any = None
+        self._rev = ""
         self.filename = "robot.json"
         self.figure_format = "png"
         self.latex_step = ""
@@ -144,6 +146,7 @@ class FilesView:
     def render(self, state: PanelState, feedback: Any, rev: str, visible: bool) -> None:
         """Show the buttons and the links made for this very state (only while visible)."""
         self._state = state
+        self._feedback, self._rev = feedback, rev
         if not visible:
             return
         note = feedback.message
@@ -287,6 +290,7 @@ class FilesView:
         try:
             content, name, mime = produce()
         except (InvalidInputError, BadInput) as error:
+            self._links.pop(key, None)  # no "preparing…" left behind
             self._dispatch(error, label)
             return
         raw = content.encode("utf-8") if isinstance(content, str) else content
@@ -298,6 +302,8 @@ class FilesView:
             css_class="robotconf-download",
         )
         self._links[key] = (state.document, spec)
+        if self._feedback is not None:
+            self._feedback.accepted(label)  # it worked: an old refusal goes
         self._dispatch(None, label)
 
     def _progress(self, key: str, what: str) -> None:
@@ -305,7 +311,7 @@ class FilesView:
         if state is None:
             return
         self._links[key] = (state.document, text(what, tone="note", key=f"{key}.link"))
-        self.render(state, _NoFeedback(), "", True)
+        self.render(state, self._feedback, self._rev, True)  # shown while the work goes on
 
     # -- producers ----------------------------------------------------------------------
 
@@ -382,11 +388,3 @@ class FilesView:
         self._dispatch(act.LoadSetup(robot, signals, simulation, program), "load")
         # The file name is the user's: text, never markup.
         self.load_status.value = f"<small>loaded {html.escape(str(upload['name']))}</small>"
-
-
-class _NoFeedback:
-    def message(self, key: str) -> str:
-        return ""
-
-    def typed(self, key: str) -> None:
-        return None

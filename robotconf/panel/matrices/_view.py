@@ -119,8 +119,14 @@ class MatricesView:
         return self._derivation[1]
 
     def text(self, state: PanelState) -> str:
-        """The numeric printout as plain text (what the text view shows)."""
-        return str(self.derivation(state.robot))
+        """The numeric printout as the text view shows it: the core's, its "at q = …"
+        line in the panel's units."""
+        return _in_units(str(self.derivation(state.robot)), state)
+
+    def latex(self, state: PanelState) -> str:
+        """The numeric derivation's LaTeX as the LaTeX view shows it (q in the panel's
+        units)."""
+        return _in_units(self.derivation(state.robot).latex(), state)
 
     def render(self, state: PanelState, feedback: Any, rev: str, visible: bool) -> None:
         """Draw the derivation (only while the tab shows: a q drag sends nothing here)."""
@@ -173,7 +179,13 @@ class MatricesView:
                 )
             ]
         )
-        shown = (robot if not symbolic else _structure(robot), view.latex, symbolic, view.lengths)
+        shown = (
+            robot if not symbolic else _structure(robot),
+            view.latex,
+            symbolic,
+            view.lengths,
+            state.units,
+        )
         if shown == self._shown:
             return
         if symbolic:
@@ -182,9 +194,9 @@ class MatricesView:
                 return
             self._show(math=math_html(steps.latex()))
         elif view.latex:
-            self._show(math=math_html(self.derivation(robot).latex()))
+            self._show(math=math_html(self.latex(state)))
         else:
-            self._show(text=preformatted(str(self.derivation(robot))))
+            self._show(text=preformatted(self.text(state)))
         self._shown = shown
 
     def _show(self, *, text: str = "", math: str = "") -> None:
@@ -216,6 +228,14 @@ class MatricesView:
             self._dispatch(act.SetViewOption("symbolic", bool(event.value)), "matrices")
         elif key == "matrices.lengths":
             self._dispatch(act.SetViewOption("lengths", bool(event.value)), "matrices")
+
+
+def _in_units(printout: str, state: PanelState) -> str:
+    """The core's printout with its "at q = (…)" line (radians, lengths) shown in the
+    panel's units, as every other number on screen."""
+    robot = state.robot
+    values = ", ".join(format_number(v, 4) for v in robot.q)
+    return printout.replace(f"at q = ({values})", f"at {q_text(robot, state.units)}", 1)
 
 
 def _structure(robot: Robot) -> Robot:

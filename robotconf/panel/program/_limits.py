@@ -85,7 +85,12 @@ def _short(value: float) -> float:
 
 
 def limit_controls(
-    robot: Robot, settings: Mapping[str, Any], units: Units, feedback: Any, rev: str
+    robot: Robot,
+    settings: Mapping[str, Any],
+    units: Units,
+    feedback: Any,
+    rev: str,
+    refused: tuple[str, str] | None = None,
 ) -> list[dict[str, Any]]:
     """One box per limit the robot's joints have, showing the limit in force."""
     types = set(robot.joint_types)
@@ -96,6 +101,8 @@ def limit_controls(
         value = units.to_shown(_in_force(robot, settings, setting, kind), _CORE_UNIT[kind])
         name = f"program.{key}"
         error = feedback.message(name)
+        if not error and refused is not None and refused[0] == f"program.{setting}":
+            error = refused[1]  # the core's refusal of the value in the table
         controls.append(
             number(
                 name,

@@ -98,6 +98,21 @@ class ProgramView:
         built = self._build(state)
         return None if isinstance(built, InvalidInputError) else built
 
+    def refusal(self, state: PanelState) -> tuple[str, str] | None:
+        """``(control key, message)`` of the core's refusal of the table, if any: a move's
+        (``program.moves[1]``), a limit's (``program.joint_accel``) or the table's."""
+        built = self._build(state)
+        if not isinstance(built, InvalidInputError):
+            return None
+        message = str(built.within("program"))  # as Run and saving say it
+        match = _MOVE_FIELD.search(built.field)
+        if match is not None:
+            return f"program.moves[{match.group(1)}]", message
+        name = built.field.split(".")[0].split("[")[0]
+        if name in {setting for _, setting, _, _ in LIMIT_FIELDS}:
+            return f"program.{name}", message
+        return "program", message
+
     def _build(self, state: PanelState) -> Program | InvalidInputError | None:
         draft, robot = state.document.program, state.robot
         cached = self._built
@@ -120,12 +135,13 @@ class ProgramView:
         built = self._build(state)
         refusal = None
         top_note = feedback.message("program")
-        if isinstance(built, InvalidInputError):
-            match = _MOVE_FIELD.search(built.field)
+        refused = self.refusal(state)
+        if refused is not None:
+            match = _MOVE_FIELD.search(refused[0])
             if match is not None:
-                refusal = (int(match.group(1)), str(built))
-            else:
-                top_note = top_note or str(built)
+                refusal = (int(match.group(1)), refused[1])
+            elif refused[0] == "program":
+                top_note = top_note or refused[1]
         run = state.program_run
         current = (
             run is not None and not isinstance(built, InvalidInputError) and built == run.program
@@ -172,7 +188,7 @@ class ProgramView:
             row(
                 "program.limits",
                 [text("Limits", tone="title")],
-                limit_controls(robot, draft.settings, units, feedback, rev),
+                limit_controls(robot, draft.settings, units, feedback, rev, refused),
             ),
             self._run_row(state, feedback, rev, run, current),
         ]

@@ -76,7 +76,7 @@ class ViewportView:
         self._snapshot: RobotSnapshot | None = None
         self._drawn_robot: Robot | None = None
         self._options: tuple[Any, ...] | None = None
-        self._extras: Hashable = object()  # nothing drawn yet: the first extras are new
+        self._extras: Hashable = None  # what the tabs drew beside the robot: nothing yet
         self._loaded: Any = None  # the motion the scene animates (identity)
         self._wizard_structure: Robot | None = None
         if hasattr(scene, "on_request"):
