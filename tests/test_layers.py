@@ -311,11 +311,9 @@ def _panel_purity_violations(imports: list[Import]) -> list[str]:
     for imp in imports:
         if not imp.source.startswith(PANEL_PURE):
             continue
-        if (
-            imp.target.split(".")[0] in WIDGET_LIBRARIES
-            or imp.target.startswith("robotconf.panel")
-            and not imp.target.startswith(PANEL_PURE_MAY_IMPORT)
-        ):
+        widget = imp.target.split(".")[0] in WIDGET_LIBRARIES
+        view = imp.target.startswith("robotconf.panel")
+        if widget or (view and not imp.target.startswith(PANEL_PURE_MAY_IMPORT)):
             wrong.append(_where(imp))
     return wrong
 
