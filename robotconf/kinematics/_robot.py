@@ -119,7 +119,7 @@ class Robot:
     robotconf.InvalidInputError: modules[1].name: modules[0] and modules[1] are both named ...
     """
 
-    __slots__ = ("_links", "_end_effector", "_active", "_name", "_geometry")
+    __slots__ = ("_links", "_end_effector", "_active", "_name", "_geometry", "_at", "_shape")
 
     def __init__(
         self,
@@ -141,6 +141,9 @@ class Robot:
         self._geometry: tuple[LinkGeometry | None, ...] = tuple(
             link.geometry() if i < self.active else None for i, link in enumerate(links)
         )
+        self._at: RobotSnapshot | None = None
+        # Facts that do not depend on q (size, joint ranges), shared by with_q's copies.
+        self._shape: dict[str, Any] = {}
 
     # -- construction -------------------------------------------------------------------
 
@@ -228,6 +231,8 @@ class Robot:
         robot._active = self._active
         robot._name = self._name
         robot._geometry = self._geometry  # q-independent: the same kernel description
+        robot._at = None
+        robot._shape = self._shape
         return robot
 
     def with_module(self, index: int, module: Link) -> Robot:
@@ -463,7 +468,7 @@ class Robot:
         ----------
         q : array-like, shape (n,), optional
             Coordinates (radians for rotations, length for translations); default: the
-            modules' own ``q``.
+            modules' own ``q``, whose snapshot is made once and kept by the robot.
 
         Returns
         -------
@@ -485,11 +490,17 @@ class Robot:
         >>> at.end_effector.round(12) + 0.0, at.frame_origins[1].round(12) + 0.0
         (array([1., 1., 0.]), array([0., 1., 0.]))
         """
+        if q is None and self._at is not None:
+            return self._at
         values = self.q if q is None else check_configuration(q, self.n, self.coordinate_names)
         poses, tip = chain_snapshot(
             self._geometry, values[np.newaxis], np.array(self._end_effector)
         )
-        return RobotSnapshot(self, values, poses, tip)
+        snapshot = RobotSnapshot(self, values, poses, tip)
+        if q is None:
+            # The robot is immutable: every view of it at its own q shares one kernel pass.
+            self._at = snapshot
+        return snapshot
 
     def transfer_matrices(self, q: Any = None, *, out: np.ndarray | None = None) -> np.ndarray:
         """Each module's transfer matrix ``A_i(q_i)`` (identity when inactive).
@@ -674,7 +685,10 @@ class Robot:
                [-60.,  60.],
                [  0.,   0.]])
         """
-        return chain_limits(self._links, self._end_effector)
+        limits = self._shape.get("limits")
+        if limits is None:
+            limits = self._shape["limits"] = chain_limits(self._links, self._end_effector)
+        return limits.copy()
 
     def with_limits(self, index_or_name: Any, limits: Any) -> Robot:
         """A copy where one link has the range ``limits`` (``None``: back to the default).
@@ -803,4 +817,8 @@ def characteristic_length(robot: Robot) -> float:
     >>> characteristic_length(robot)
     60.0
     """
-    return chain_length(robot.modules, robot.end_effector_point)
+    shape = robot._shape
+    length = shape.get("length")
+    if length is None:
+        length = shape["length"] = chain_length(robot.modules, robot.end_effector_point)
+    return float(length)
