@@ -33,7 +33,7 @@ def edit_move(
     moves = list(draft.moves)
     if name == "kind":
         points = end_points(draft, robot)
-        before = points[index - 1] if index > 0 else robot.end_effector()
+        before = points[index - 1] if index > 0 else robot.at().end_effector
         moves[index] = converted(moves[index], value, robot, before, points[index])
     else:
         moves[index] = edited(moves[index], name, value, component)

@@ -4,7 +4,8 @@ effector, as one form that renders the state and turns input into actions."""
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Hashable
+from typing import Any
 
 from ..._errors import InvalidInputError
 from ...kinematics import DH_PARAMETERS, MODULE_OFFSETS
@@ -40,13 +41,15 @@ class EditorView:
         self._state: PanelState | None = None
         self.ranges = Ranges()
         self.form = Form(self._event, css_class="robotconf-editor")
+        self._rows: dict[Hashable, dict[str, Any]] = {}
 
     def render(self, state: PanelState, feedback: Feedback, rev: str) -> None:
         """Show the state's robot in its editor."""
         self._state = state
-        ctx = EditorContext(state, feedback, self.ranges, rev)
+        ctx = EditorContext(state, feedback, self.ranges, rev, self._rows)
         rows = dh_rows(ctx) if state.editor == "dh" else module_rows(ctx)
         self.form.show(rows + extras_rows(ctx))
+        ctx.keep()
 
     # -- input --------------------------------------------------------------------------
 

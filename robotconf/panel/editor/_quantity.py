@@ -115,6 +115,8 @@ class Ranges:
 
     def __init__(self) -> None:
         self._widened: dict[str, tuple[float, str]] = {}  # key -> (factor, unit label)
+        #: Bumped at every change, so a drawing made with the old ranges is not reused.
+        self.version = 0
 
     def span(
         self, key: str, shown: float, default: tuple[float, float], step: float, unit: str
@@ -133,10 +135,13 @@ class Ranges:
         """Double the range of control ``key`` (showing numbers in ``unit``)."""
         factor, known = self._widened.get(key, (1.0, unit))
         self._widened[key] = (factor * 2.0 if known == unit else 2.0, unit)
+        self.version += 1
 
     def forget(self) -> None:
         """Every range back to its default (another robot)."""
-        self._widened.clear()
+        if self._widened:
+            self._widened.clear()
+            self.version += 1
 
 
 def number_spec(

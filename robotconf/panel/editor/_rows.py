@@ -9,7 +9,9 @@ row (``modules[1]``), the add button to the list (``modules`` / ``dh``).
 from __future__ import annotations
 
 import math
+from collections.abc import Callable, Hashable
 from dataclasses import dataclass
+from functools import partial
 from typing import Any
 
 import numpy as np
@@ -56,17 +58,46 @@ CONVENTION_TIPS = {
 
 @dataclass
 class EditorContext:
-    """What every row needs: the state, the refused inputs, the ranges and the rev."""
+    """What every row needs: the state, the refused inputs, the ranges and the rev.
+
+    ``memo`` keeps the rows of the last drawing: a row whose link and surroundings did not
+    change is the same spec as before (a q drag rebuilds one row, not the table).
+    """
 
     state: PanelState
     feedback: Feedback
     ranges: Ranges
     rev: str
+    memo: dict[Hashable, dict[str, Any]] | None = None
 
     def __post_init__(self) -> None:
         # The robot's size does not depend on q: once per drawing, not once per box.
         self._scale = length_scale(self.state.robot)
         self._step = length_step(self._scale)
+        self._common = (
+            self.state.units,
+            self._scale,
+            self.rev,
+            self.feedback.version,
+            self.ranges.version,
+            self.state.robot.n,
+        )
+        self._drawn: dict[Hashable, dict[str, Any]] = {}
+
+    def cached(self, key: Hashable, build: Callable[[], dict[str, Any]]) -> dict[str, Any]:
+        """The row ``build()`` makes, reused from the last drawing when ``key`` (with the
+        units, the size, the rev, the messages and the ranges) is the same."""
+        full = (key, self._common)
+        found = None if self.memo is None else self.memo.get(full)
+        spec = build() if found is None else found
+        self._drawn[full] = spec
+        return spec
+
+    def keep(self) -> None:
+        """Remember this drawing's rows (only these: the memo stays the size of one table)."""
+        if self.memo is not None:
+            self.memo.clear()
+            self.memo.update(self._drawn)
 
     @property
     def robot(self) -> Robot:
@@ -170,61 +201,69 @@ def _q_control(ctx: EditorContext, key: str, i: int, link: Any, limits: np.ndarr
     )
 
 
+def _module_row(
+    ctx: EditorContext, i: int, link: Any, limits: np.ndarray, scale: float
+) -> dict[str, Any]:
+    prefix = f"modules[{i}]"
+    head: list[dict[str, Any]] = [text(f"M{i + 1}", tone="title")]
+    name = link.name
+    if isinstance(link, Module):
+        head.append(
+            select(
+                f"{prefix}.kind",
+                link.kind,
+                KIND_OPTIONS,
+                label="type",
+                rev=ctx.rev,
+                width="96px",
+                css_class="robotconf-module-kind",
+            )
+        )
+    else:
+        head.append(text(repr(link), tone="note"))  # a DH row: its q only
+        name = None
+    if name:
+        head.append(text(name, tone="note"))
+    head += _move_buttons(prefix, i, ctx.robot.n, "module")
+    controls: list[dict[str, Any]] = []
+    if isinstance(link, Module):
+        for axis, field in enumerate(MODULE_OFFSETS):
+            controls.append(
+                ctx.number(
+                    f"{prefix}.{field}",
+                    link.a[axis],
+                    ctx.length(),
+                    (-scale, scale),
+                    label=field,
+                    disabled=link.kind == "none",
+                    label_width="20px",
+                    css_class="robotconf-module-offset",
+                )
+            )
+    controls.append(_q_control(ctx, f"{prefix}.q", i, link, limits))
+    return row(
+        prefix,
+        head,
+        controls,
+        box=True,
+        note=ctx.row_note(prefix),
+        css_class="robotconf-module-row",
+    )
+
+
 def module_rows(ctx: EditorContext) -> list[dict[str, Any]]:
     """One row per link of a module robot (a DH link in it shows read-only with its q),
     then the add button."""
     robot = ctx.robot
     limits = robot.joint_limits()
     scale = ctx.scale()
-    rows = []
-    for i, link in enumerate(robot.modules):
-        prefix = f"modules[{i}]"
-        head: list[dict[str, Any]] = [text(f"M{i + 1}", tone="title")]
-        name = link.name
-        if isinstance(link, Module):
-            head.append(
-                select(
-                    f"{prefix}.kind",
-                    link.kind,
-                    KIND_OPTIONS,
-                    label="type",
-                    rev=ctx.rev,
-                    width="96px",
-                    css_class="robotconf-module-kind",
-                )
-            )
-        else:
-            head.append(text(repr(link), tone="note"))  # a DH row: its q only
-            name = None
-        if name:
-            head.append(text(name, tone="note"))
-        head += _move_buttons(prefix, i, robot.n, "module")
-        controls: list[dict[str, Any]] = []
-        if isinstance(link, Module):
-            for axis, field in enumerate(MODULE_OFFSETS):
-                controls.append(
-                    ctx.number(
-                        f"{prefix}.{field}",
-                        link.a[axis],
-                        ctx.length(),
-                        (-scale, scale),
-                        label=field,
-                        disabled=link.kind == "none",
-                        label_width="20px",
-                        css_class="robotconf-module-offset",
-                    )
-                )
-        controls.append(_q_control(ctx, f"{prefix}.q", i, link, limits[i]))
-        rows.append(
-            row(
-                prefix,
-                head,
-                controls,
-                box=True,
-                note=ctx.row_note(prefix),
-                css_class="robotconf-module-row",
-            )
+    rows = [
+        ctx.cached(
+            ("module", i, link, tuple(limits[i])),
+            partial(_module_row, ctx, i, link, limits[i], scale),
         )
+        for i, link in enumerate(robot.modules)
+    ]
     rows.append(
         row(
             "modules",
@@ -292,49 +331,12 @@ def dh_rows(ctx: EditorContext) -> list[dict[str, Any]]:
         )
     limits = robot.joint_limits()
     scale = ctx.scale()
-    for i, link in enumerate(robot.modules):
-        assert isinstance(link, DHLink)
-        prefix = f"dh[{i}]"
-        cells: list[dict[str, Any]] = [text(str(i + 1), tone="title")]
-        for name in DH_PARAMETERS:
-            angle = name in DH_ANGLES
-            quantity = ctx.coordinate("rad") if angle else ctx.length()
-            default = q_range("rad", scale, None, state.units.degrees) if angle else (-scale, scale)
-            cells.append(
-                ctx.number(
-                    f"{prefix}.{name}",
-                    getattr(link, name),
-                    quantity,
-                    default,
-                    label=DH_SYMBOLS[name],
-                    slider=False,
-                    width="70px",
-                    css_class=f"robotconf-dh-{name}",
-                )
-            )
-        letters = [(letter, letter) for letter in JOINT_LETTERS.values()]
-        cells.append(
-            select(
-                f"{prefix}.joint",
-                link.joint,
-                letters,
-                rev=ctx.rev,
-                width="52px",
-                title="R: q adds to θ (revolute); P: q adds to d (prismatic)",
-            )
+    rows += [
+        ctx.cached(
+            ("dh", i, link, tuple(limits[i])), partial(_dh_row, ctx, i, link, limits[i], scale)
         )
-        cells += _move_buttons(prefix, i, robot.n, "row")
-        q = _q_control(ctx, f"{prefix}.q", i, link, limits[i])
-        rows.append(
-            row(
-                prefix,
-                cells,
-                [q],
-                box=True,
-                note=ctx.row_note(prefix),
-                css_class="robotconf-dh-row",
-            )
-        )
+        for i, link in enumerate(robot.modules)
+    ]
     rows.append(
         row(
             "dh",
@@ -345,10 +347,62 @@ def dh_rows(ctx: EditorContext) -> list[dict[str, Any]]:
     return rows
 
 
+def _dh_row(
+    ctx: EditorContext, i: int, link: Any, limits: np.ndarray, scale: float
+) -> dict[str, Any]:
+    assert isinstance(link, DHLink)
+    prefix = f"dh[{i}]"
+    cells: list[dict[str, Any]] = [text(str(i + 1), tone="title")]
+    for name in DH_PARAMETERS:
+        angle = name in DH_ANGLES
+        quantity = ctx.coordinate("rad") if angle else ctx.length()
+        default = q_range("rad", scale, None, ctx.state.units.degrees) if angle else (-scale, scale)
+        cells.append(
+            ctx.number(
+                f"{prefix}.{name}",
+                getattr(link, name),
+                quantity,
+                default,
+                label=DH_SYMBOLS[name],
+                slider=False,
+                width="70px",
+                css_class=f"robotconf-dh-{name}",
+            )
+        )
+    letters = [(letter, letter) for letter in JOINT_LETTERS.values()]
+    cells.append(
+        select(
+            f"{prefix}.joint",
+            link.joint,
+            letters,
+            rev=ctx.rev,
+            width="52px",
+            title="R: q adds to θ (revolute); P: q adds to d (prismatic)",
+        )
+    )
+    cells += _move_buttons(prefix, i, ctx.robot.n, "row")
+    q = _q_control(ctx, f"{prefix}.q", i, link, limits)
+    return row(
+        prefix,
+        cells,
+        [q],
+        box=True,
+        note=ctx.row_note(prefix),
+        css_class="robotconf-dh-row",
+    )
+
+
 def extras_rows(ctx: EditorContext) -> list[dict[str, Any]]:
     """The active-module count (paper §2.3.3) and the end-effector point P."""
     robot = ctx.robot
-    scale = ctx.scale()
+    return [
+        ctx.cached(("active", robot.active), partial(_active_row, ctx)),
+        ctx.cached(("end_effector", *robot.end_effector_point.tolist()), partial(_point_row, ctx)),
+    ]
+
+
+def _active_row(ctx: EditorContext) -> dict[str, Any]:
+    robot = ctx.robot
     count = ctx.number(
         "active",
         float(robot.active),
@@ -359,6 +413,12 @@ def extras_rows(ctx: EditorContext) -> list[dict[str, Any]]:
         width="60px",
         title=f"the paper's number of active modules, 1 to {robot.n}",
     )
+    return row("active", [count])
+
+
+def _point_row(ctx: EditorContext) -> dict[str, Any]:
+    robot = ctx.robot
+    scale = ctx.scale()
     point = [
         ctx.number(
             f"end_effector.{name}",
@@ -371,9 +431,6 @@ def extras_rows(ctx: EditorContext) -> list[dict[str, Any]]:
         )
         for name, value in zip(POINT, robot.end_effector_point, strict=True)
     ]
-    return [
-        row("active", [count]),
-        row(
-            "end_effector", [text("End-effector P in the last module's frame", tone="title")], point
-        ),
-    ]
+    return row(
+        "end_effector", [text("End-effector P in the last module's frame", tone="title")], point
+    )

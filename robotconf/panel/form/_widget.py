@@ -16,6 +16,7 @@ the way without waiting for each round trip.
 
 from __future__ import annotations
 
+import json
 import math
 from collections.abc import Callable, Iterator
 from pathlib import Path
@@ -138,7 +139,9 @@ class Form(anywidget.AnyWidget):
 
     _esm = traitlets.Unicode(_SCRIPT).tag(sync=True)
     _css = traitlets.Unicode(_STYLE).tag(sync=True)
-    spec = traitlets.Dict().tag(sync=True)
+    #: The spec as JSON text: the widget layer sends a string as it is, where it would
+    #: walk a dict of a hundred controls looking for binary buffers at every change.
+    _spec_json = traitlets.Unicode("{}").tag(sync=True)
 
     def __init__(
         self,
@@ -150,6 +153,9 @@ class Form(anywidget.AnyWidget):
         self._on_event = on_event
         self._class = css_class
         self._revs: dict[str, str] = {}
+        #: What the page shows: ``{"rows": [...], "class": ...}``.
+        self.spec: dict[str, Any] = {}
+        self._row_texts: dict[int, tuple[dict[str, Any], str]] = {}
         #: Events received from the page (for tests and benchmarks).
         self.received = 0
         self.on_msg(self._message)
@@ -158,8 +164,18 @@ class Form(anywidget.AnyWidget):
         """Draw ``rows`` (the page gets the spec only when it changed)."""
         spec = {"rows": rows, "class": self._class}
         self._revs = {c["key"]: c.get("rev", "") for c in _controls(spec) if "key" in c}
-        if spec != self.spec:
-            self.spec = spec
+        if spec == self.spec:
+            return
+        self.spec = spec
+        # A row the caller drew again as the very same dict keeps its JSON text: a q drag
+        # encodes the one row that changed, not the whole table.
+        texts: dict[int, tuple[dict[str, Any], str]] = {}
+        for r in rows:
+            known = self._row_texts.get(id(r))
+            texts[id(r)] = (r, _json(r)) if known is None or known[0] is not r else known
+        self._row_texts = texts
+        parts = ",".join(texts[id(r)][1] for r in rows)
+        self._spec_json = f'{{"rows":[{parts}],"class":{_json(self._class)}}}'
 
     def control(self, key: str) -> dict[str, Any]:
         """The spec of control ``key`` as the page shows it.
@@ -198,6 +214,11 @@ class Form(anywidget.AnyWidget):
 
     def _message(self, _widget: Any, content: Any, _buffers: Any) -> None:
         self.receive(content)
+
+
+def _json(value: Any) -> str:
+    # No NaN or infinity reaches the page: JSON has none, and JSON.parse refuses them.
+    return json.dumps(value, separators=(",", ":"), allow_nan=False)
 
 
 class _User:

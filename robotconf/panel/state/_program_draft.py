@@ -147,7 +147,7 @@ def end_points(draft: ProgramDraft, robot: Robot) -> list[np.ndarray | None]:
     [[70.0, 0.0, 20.0], [70.0, 0.0, 20.0], [60.0, 10.0, 30.0]]
     """
     points: list[np.ndarray | None] = []
-    before: np.ndarray | None = robot.end_effector()
+    before: np.ndarray | None = robot.at().end_effector
     for move in draft.moves:
         point: np.ndarray | None
         if isinstance(move, Wait):
@@ -178,7 +178,7 @@ def taught(move: Move, robot: Robot, via: bool = False) -> Move:
     >>> taught(LIN(position=(1.0, 2.0, 3.0), speed=5.0), robot)
     LIN(position=(70.0, 0.0, 20.0), pose=None, speed=5.0, accel=None, orientation='slerp')
     """
-    point = tuple(float(v) for v in robot.end_effector())
+    point = tuple(float(v) for v in robot.at().end_effector)
     pose = tuple(tuple(float(v) for v in row) for row in robot.end_effector_pose())
     if isinstance(move, PTP):
         return PTP(q=tuple(float(v) for v in robot.q), profile=move.profile)
@@ -216,7 +216,7 @@ def converted(move: Move, kind: str, robot: Robot, before: Any, after: Any) -> M
     """
     if kind == move.kind:
         return move
-    end = robot.end_effector() if after is None else np.asarray(after, dtype=float)
+    end = robot.at().end_effector if after is None else np.asarray(after, dtype=float)
     point = tuple(float(v) for v in end)
     speed = getattr(move, "speed", None)
     if kind == "Wait":
@@ -227,7 +227,7 @@ def converted(move: Move, kind: str, robot: Robot, before: Any, after: Any) -> M
         return PTP(position=point)
     if kind == "LIN":
         return LIN(position=point, speed=speed)
-    start = robot.end_effector() if before is None else np.asarray(before, dtype=float)
+    start = robot.at().end_effector if before is None else np.asarray(before, dtype=float)
     return CIRC(via=_via(start, end, robot), end=point, speed=speed)
 
 

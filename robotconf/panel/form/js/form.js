@@ -473,8 +473,9 @@ function render({ model, el }) {
   let rowMessages = new Map();
   let shape = null;
 
+  const specOf = () => JSON.parse(model.get("_spec_json") || "{}");
   const draw = () => {
-    const spec = model.get("spec") || {};
+    const spec = specOf();
     const rows = spec.rows || [];
     root.className = "rc-form" + (spec.class ? " " + spec.class : "");
     const newShape = shapeOf(rows);
@@ -526,12 +527,12 @@ function render({ model, el }) {
     }
   };
   const refresh = () => {
-    const spec = model.get("spec") || {};
+    const spec = specOf();
     if (shapeOf(spec.rows || []) === shape) draw();
   };
-  model.on("change:spec", draw);
+  model.on("change:_spec_json", draw);
   draw();
-  return () => model.off("change:spec", draw);
+  return () => model.off("change:_spec_json", draw);
 }
 
 export default { render };
