@@ -115,8 +115,11 @@ def test_a_program_the_robot_no_longer_fits_is_not_written_until_fixed(tmp_path)
     path = tmp_path / "my_robot.json"
     panel = bound(path)
     panel.apply(rc.panel.actions.AddMove())
-    with pytest.raises(rc.InvalidInputError, match="the LIN goes nowhere"):
-        panel.apply(rc.panel.actions.EditMove(0, "kind", "LIN"))  # to where it is already
+    saved = path.read_text()
+    panel.apply(rc.panel.actions.EditMove(0, "kind", "LIN"))  # to where it is already
+    assert "the LIN goes nowhere" in panel.errors["program.moves[0]"]
+    assert panel.program is None and panel.state.document.program.moves[0].kind == "LIN"
+    assert path.read_text() == saved  # the draft is kept on screen, not written
     program = rc.Program(panel.robot, [rc.LIN(position=(50, 10, 30), speed=10)])
     panel.apply(rc.panel.actions.LoadSetup(panel.robot, {}, None, program))
     assert rc.load_setup(path).program == program

@@ -125,7 +125,9 @@ def strings(root: widgets.Widget) -> Iterator[tuple[str, str, str]]:
         where = f"{type(widget).__name__}"
         state = widget.get_state()
         for trait, value in state.items():
-            if trait.startswith("_") and trait not in ("_options_labels", "_titles"):
+            if trait == "_spec_json":  # a form's spec, sent as JSON text
+                value = json.loads(value)
+            elif trait.startswith("_") and trait not in ("_options_labels", "_titles"):
                 continue
             if isinstance(value, dict):  # a form's spec: the page writes it as text
                 yield from _spec_strings(value, f"{where}.{trait}")

@@ -34,7 +34,9 @@ def test_changing_the_type_of_module_2_changes_the_robot_and_redraws_it():
     ui(panel, "modules[1].kind").choose("Tz")
     assert panel.robot.modules[1] == rc.Module("Tz", a=(0, 0, 20))
     assert "A2: Tz(q2)" in panel.matrices.text(panel.state)
-    assert panel.matrices.text(panel.state) == str(rc.derivation(panel.robot))
+    shown = panel.matrices.text(panel.state)  # the core's printout, q in the panel's units
+    assert "at q = (0°, 0 units, 0°)" in shown
+    assert shown.replace("(0°, 0 units, 0°)", "(0, 0, 0)") == str(rc.derivation(panel.robot))
     assert panel.scene.names() == ["show"] and panel.scene.robot == panel.robot
 
 
