@@ -54,6 +54,35 @@ def test_a_q_drag_moves_the_robot_and_draws_one_snapshot():
     assert FakeScene.created >= 1
 
 
+@pytest.mark.parametrize("tab", ["motion", "program"])
+def test_a_q_step_checks_q_once_and_runs_the_kernel_once(monkeypatch, tab):
+    import robotconf.kinematics._kernel as kernel
+    import robotconf.kinematics._robot as robot_module
+    import robotconf.kinematics._snapshot as snapshot
+
+    panel = make_panel()
+    panel.apply(act.SelectTab(tab))
+    ui(panel, "modules[1].q").drag(-80.0)
+    counts = {"checks": 0, "passes": 0}
+
+    def counted(name, function):  # type: ignore[no-untyped-def]
+        def call(*args, **kwargs):  # type: ignore[no-untyped-def]
+            counts[name] += 1
+            return function(*args, **kwargs)
+
+        return call
+
+    check = robot_module.check_configuration
+    monkeypatch.setattr(robot_module, "check_configuration", counted("checks", check))
+    monkeypatch.setattr(kernel, "_run", counted("passes", kernel._run))
+    monkeypatch.setattr(snapshot, "run_chain", counted("passes", snapshot.run_chain))
+    ui(panel, "modules[1].q").drag(-90.0)
+    # The header's p_EE, the editor, the 3D view (and the Program tab's points) share one
+    # snapshot of the robot at its new q.
+    assert counts == {"checks": 1, "passes": 1}
+    np.testing.assert_allclose(panel.scene.snapshot.end_effector, [0, 0, 90], atol=1e-12)
+
+
 def test_the_box_and_the_slider_show_one_number():
     panel = make_panel()
     ui(panel, "modules[2].q").type("-45")

@@ -24,7 +24,7 @@ The largest joint step, 0.5 rad at the default 1 rad/s and 2 rad/s², takes
 1.5
 """
 
-from ._limits import LIMIT_NAMES, Limits
+from ._limits import LIMIT_NAMES, Limits, resolve_limits
 from ._motion import ProgramMotion
 from ._moves import CIRC, LIN, MOVE_TYPES, ORIENTATIONS, PTP, Move, Wait
 from ._paths import CartesianPath, arc_path, line_path
@@ -63,6 +63,7 @@ __all__ = [
     "line_path",
     "arc_path",
     "Limits",
+    "resolve_limits",
     # files
     "program_to_dict",
     "program_from_dict",

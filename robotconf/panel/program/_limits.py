@@ -12,13 +12,12 @@ has); the core takes one value, or one per joint when both kinds are there.
 from __future__ import annotations
 
 from collections.abc import Mapping
-from functools import lru_cache
 from typing import Any
 
 import numpy as np
 
 from ...kinematics import Robot
-from ...programs import Limits, Program, Wait
+from ...programs import Limits, resolve_limits
 from ..form import message, number, text
 from ..state import Units
 
@@ -60,14 +59,9 @@ def joint_setting(robot: Robot, given: Any, defaults: np.ndarray, kind: str, val
     return tuple(float(v) for v in values)
 
 
-@lru_cache(maxsize=8)
-def _defaults(structure: Robot) -> Limits:
-    return Program(structure, [Wait(0.0)]).limits
-
-
 def default_limits(robot: Robot) -> Limits:
     """The core's default limits for ``robot`` (from its size and joint types)."""
-    return _defaults(robot.with_q(np.zeros(robot.n)))
+    return resolve_limits(robot, {})
 
 
 def _in_force(robot: Robot, settings: Mapping[str, Any], setting: str, kind: str | None) -> float:
