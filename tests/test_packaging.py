@@ -35,6 +35,8 @@ RUNTIME_FILES = (
     "robotconf/scene/js/glue.js",
     "robotconf/scene/js/loader.js",
     "robotconf/scene/js/widget.js",
+    "robotconf/panel/form/js/form.js",
+    "robotconf/panel/form/js/form.css",
 )
 
 #: Run in the fresh venv, from a folder outside the repository: argv = venv, html path.
