@@ -26,15 +26,16 @@ lab: $(STAMP)
 	$(BIN)/jupyter lab $(ROOT_FLAG) notebooks/configurator.ipynb
 
 # A third convenience, for students who don't code: the configurator alone in Voilà, on
-# http://127.0.0.1:$(APP_PORT) and offline. Voilà runs in app/ to read app/voila.json (its
-# settings, explained in docs/app.md); JUPYTER_PATH lets it find the app's template.
+# http://127.0.0.1:$(APP_PORT) and offline. app/serve.py is Voilà with a classroom's locks
+# (token, XSRF, Host check, kernels per client); it runs in app/ to read app/voila.json
+# (settings explained in docs/app.md); JUPYTER_PATH lets it find the app's template.
 APP_PORT ?= 8866
 
 .PHONY: app
 
 app: $(STAMP)
 	test -x $(BIN)/voila || $(BIN)/python -m pip install --quiet -e ".[app]"
-	cd app && JUPYTER_PATH=$(CURDIR)/app/jupyter $(abspath $(BIN))/voila configurator.ipynb --port=$(APP_PORT)
+	cd app && JUPYTER_PATH=$(CURDIR)/app/jupyter $(abspath $(BIN))/python serve.py configurator.ipynb --port=$(APP_PORT)
 
 lint: $(STAMP)
 	$(BIN)/ruff check .
