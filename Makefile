@@ -60,6 +60,38 @@ lite: $(STAMP)
 test-lite: lite
 	ROBOTCONF_LITE_SITE=$(abspath $(LITE_OUT)) $(BIN)/python -m pytest tests/test_lite.py tests/browser/test_lite_browser.py
 
+# A class on one computer: JupyterHub with configurable-http-proxy (from npm, pinned in
+# hub/package-lock.json) and a separate student environment, robotconf with JupyterLab and
+# no teacher tools (docs/hub.md). `make hub-env` only installs them (the hub browser test
+# calls it); both live in build/hub/ and are redone when their pins change.
+HUB_BUILD ?= build/hub
+HUB_VENV := $(HUB_BUILD)/student-venv
+HUB_STAMP := $(HUB_VENV)/.installed
+HUB_PROXY := $(HUB_BUILD)/node_modules/.bin/configurable-http-proxy
+HUB_PORT ?= 8000
+
+.PHONY: hub hub-env
+
+$(HUB_STAMP): pyproject.toml
+	test -x $(HUB_VENV)/bin/python || $(PYTHON) -m venv $(HUB_VENV)
+	$(HUB_VENV)/bin/python -m pip install --quiet --upgrade pip
+	$(HUB_VENV)/bin/python -m pip install --quiet -e ".[hub]"
+	touch $(HUB_STAMP)
+
+$(HUB_PROXY): hub/package.json hub/package-lock.json
+	mkdir -p $(HUB_BUILD)
+	cp hub/package.json hub/package-lock.json $(HUB_BUILD)/
+	cd $(HUB_BUILD) && npm ci --no-audit --no-fund --loglevel=error
+	touch $(HUB_PROXY)
+
+hub-env: $(HUB_STAMP) $(HUB_PROXY)
+
+hub: hub-env
+	@password=$${ROBOTCONF_HUB_PASSWORD:-$$($(PYTHON) -c "import secrets; print(secrets.token_urlsafe(9))")}; \
+	echo "Students ada and alan log in at http://127.0.0.1:$(HUB_PORT)/ with the password $$password"; \
+	ROBOTCONF_HUB_PORT=$(HUB_PORT) ROBOTCONF_HUB_PASSWORD=$$password \
+		$(HUB_VENV)/bin/jupyterhub -f hub/jupyterhub_config.py
+
 bench: $(STAMP)
 	for script in benchmarks/bench_*.py; do $(BIN)/python $$script || exit 1; done
 
