@@ -72,10 +72,13 @@ HUB_PORT ?= 8000
 
 .PHONY: hub hub-env
 
-$(HUB_STAMP): pyproject.toml
+$(HUB_STAMP): pyproject.toml hub/overrides.json
 	test -x $(HUB_VENV)/bin/python || $(PYTHON) -m venv $(HUB_VENV)
 	$(HUB_VENV)/bin/python -m pip install --quiet --upgrade pip
 	$(HUB_VENV)/bin/python -m pip install --quiet -e ".[hub]"
+	# JupyterLab's settings for every student: no news prompt, no update checks.
+	mkdir -p $(HUB_VENV)/share/jupyter/lab/settings
+	cp hub/overrides.json $(HUB_VENV)/share/jupyter/lab/settings/overrides.json
 	touch $(HUB_STAMP)
 
 $(HUB_PROXY): hub/package.json hub/package-lock.json

@@ -107,7 +107,8 @@ c.Spawner.environment = {
     "MPLBACKEND": "module://matplotlib_inline.backend_inline",
 }
 c.Spawner.args = [
-    # No news prompt over the student's page, no update checks from a class's servers.
+    # No news or update checks from a class's servers (hub/overrides.json, installed into
+    # the student environment, also keeps the news prompt off the student's page).
     "--LabApp.news_url=",
     "--LabApp.check_for_updates_class=jupyterlab.NeverCheckForUpdate",
     *(["--allow-root"] if os.geteuid() == 0 else []),

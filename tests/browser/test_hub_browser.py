@@ -100,6 +100,8 @@ def test_two_students_work_through_the_proxy_apart(hub: Hub, students) -> None: 
         _open_configurator(page)
         _move_q1_to_30_degrees(page)
         assert not page.errors, page.errors
+        # The class's settings keep JupyterLab's news prompt off the student's page.
+        assert page.get_by_text("notified about official Jupyter news").count() == 0
 
     for student, page in students.items():
         # Every request, the kernel's websocket included, went to the proxy's address.
