@@ -94,6 +94,8 @@ def _elsewhere(urls: list[str], host: str) -> list[str]:
     return [u for u in urls if not u.startswith(("data:", "blob:")) and u.split("/")[2] != host]
 
 
+# The first test also waits for `make hub-env` (the student venv: minutes on a fresh CI).
+@pytest.mark.timeout(1800)
 def test_two_students_work_through_the_proxy_apart(hub: Hub, students) -> None:  # type: ignore[no-untyped-def]
     for student, page in students.items():
         log_in(page, hub, student)
@@ -122,6 +124,7 @@ def test_two_students_work_through_the_proxy_apart(hub: Hub, students) -> None: 
     assert own.status == 200 and "rc.configurator" in own.text()
 
 
+@pytest.mark.timeout(900)
 def test_students_see_no_teacher_tools(hub: Hub, students) -> None:  # type: ignore[no-untyped-def]
     page = students["ada"]
     log_in(page, hub, "ada")
