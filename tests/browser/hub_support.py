@@ -40,6 +40,9 @@ def hub_environment() -> float:
             pytest.skip(
                 f"no {tool} on PATH: the hub's proxy comes from npm (bash .ci/run installs it)"
             )
+    version = subprocess.run(["node", "--version"], capture_output=True, text=True).stdout
+    if int(version.strip().lstrip("v").split(".")[0] or 0) < 20:
+        pytest.skip(f"Node {version.strip()}: configurable-http-proxy 5 needs Node 20 or newer")
     start = time.monotonic()
     result = subprocess.run(
         ["make", "-s", "hub-env"], cwd=ROOT, capture_output=True, text=True, timeout=1500
