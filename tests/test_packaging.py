@@ -19,10 +19,16 @@ from __future__ import annotations
 import configparser
 import importlib
 import os
+import re
 import shutil
 import subprocess
 import sys
 import zipfile
+
+try:
+    import tomllib
+except ModuleNotFoundError:  # Python 3.10
+    import tomli as tomllib  # type: ignore[no-redef]
 from pathlib import Path, PurePosixPath
 
 import pytest
@@ -121,15 +127,18 @@ def source_files() -> list[str]:
 
 
 @pytest.fixture(scope="module")
-def built_wheel(tmp_path_factory: pytest.TempPathFactory, source_files: list[str]) -> Path:
-    """A wheel built offline from a copy of the checkout (no stale build/ or egg-info)."""
+def wheel_build(
+    tmp_path_factory: pytest.TempPathFactory, source_files: list[str]
+) -> tuple[Path, str]:
+    """A wheel built offline from a copy of the checkout (no stale build/ or egg-info), and
+    the build's log (pip's ``--verbose`` shows the backend's warnings)."""
     copy = tmp_path_factory.mktemp("checkout")
     for name in source_files:
         target = copy / name
         target.parent.mkdir(parents=True, exist_ok=True)
         shutil.copy2(ROOT / name, target)
     dist = tmp_path_factory.mktemp("dist")
-    run(
+    build = run(
         [
             sys.executable,
             "-m",
@@ -138,7 +147,7 @@ def built_wheel(tmp_path_factory: pytest.TempPathFactory, source_files: list[str
             "--no-deps",
             "--no-build-isolation",
             "--no-index",
-            "--quiet",
+            "--verbose",
             "-w",
             dist,
             copy,
@@ -147,7 +156,36 @@ def built_wheel(tmp_path_factory: pytest.TempPathFactory, source_files: list[str
     )
     wheels = sorted(dist.glob(f"{PACKAGE}-*.whl"))
     assert len(wheels) == 1, f"expected one {PACKAGE} wheel in {dist}, found {wheels}"
-    return wheels[0]
+    return wheels[0], build.stdout + build.stderr
+
+
+@pytest.fixture(scope="module")
+def built_wheel(wheel_build: tuple[Path, str]) -> Path:
+    """The wheel of :func:`wheel_build`."""
+    return wheel_build[0]
+
+
+def test_wheel_builds_without_warnings_and_names_its_license(
+    wheel_build: tuple[Path, str],
+) -> None:
+    wheel, log = wheel_build
+    # setuptools announces removals (the license table, on 2027-02-18) as warnings in the
+    # build log: any of them is a build that stops working on a later setuptools. (Its
+    # plain "warning: ... byte-compiling is disabled" notes are not warnings classes.)
+    warning = re.compile(r"deprecat|\w+Warning\b", re.IGNORECASE)
+    warnings = [line for line in log.splitlines() if warning.search(line)]
+    assert not warnings, "\n".join(warnings)
+    with zipfile.ZipFile(wheel) as archive:
+        metadata_name = next(n for n in archive.namelist() if n.endswith(".dist-info/METADATA"))
+        metadata = archive.read(metadata_name).decode("utf-8")
+    assert "License-Expression: MIT" in metadata.splitlines(), metadata[:800]
+
+
+def test_the_build_backend_is_pinned() -> None:
+    """A build next year gets a setuptools this project was built with, not a newer major."""
+    requires = tomllib.loads((ROOT / "pyproject.toml").read_text("utf-8"))["build-system"]
+    (backend,) = [r for r in requires["requires"] if r.startswith("setuptools")]
+    assert re.fullmatch(r"setuptools>=7[7-9]\S*,<\d+", backend), backend
 
 
 def test_wheel_holds_every_package_file_and_the_console_script(
