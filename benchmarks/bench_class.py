@@ -43,10 +43,11 @@ TARGET_P95_S = 1.0
 #: (``rc.configurator``, widget values, the Run button, ``panel.robot``).
 STEP_CODE = {
     "open panel": 'import robotconf as rc\npanel = rc.configurator(rc.preset("paper"))',
-    "move q": "panel.modules.rows[0].q.box.value = {angle}",
+    # What the page sends when the student types into q1's box and picks q3's signal.
+    "move q": 'panel.editor.form.user("modules[0].q").type("{angle}")',
     "run": (
-        'panel.motion_section.editors[2].kind.value = "RepeatingSequence"\n'
-        "panel.motion_section.run_button.click()\n"
+        'panel.motion_tab.form.user("signals.q3").choose("RepeatingSequence")\n'
+        'panel.motion_tab.form.user("run").click()\n'
         "assert panel.motion is not None and not panel.errors, panel.errors"
     ),
     "check answer": (
