@@ -331,11 +331,13 @@ class Cell:
 
         return clearance(self, robot, q, others)
 
-    def check(self, motion: Any, robot: str | None = None, *, margin: float = 0.0) -> CellCheck:
+    def check(
+        self, motion: Any, robot: str | None = None, *, margin: float = 0.0, dt: float = 0.01
+    ) -> CellCheck:
         """Every contact along a motion or program (see :func:`robotconf.cell._check.check`)."""
         from ._check import check
 
-        return check(self, motion, robot, margin=margin)
+        return check(self, motion, robot, margin=margin, dt=dt)
 
     def reach(self, robot: str | None = None, targets: Any = None, **options: Any) -> Reach:
         """Which targets a robot reaches, by how many branches (see :mod:`._reach`)."""

@@ -87,3 +87,27 @@ def check_parent(entries: dict[str, Entry], parent: Any, field: str) -> str | No
             field, one_line(parent), f"None or one of {sorted(entries)[:20]}", problem="no such parent:"
         )
     return parent
+
+
+def planning_robot(entry: RobotEntry) -> Robot:
+    """The robot whose end effector is the TCP (the tool's, else the flange).
+
+    The flange frame has the last module's axes and the end-effector point as origin, so
+    the TCP point is the end-effector point moved by the TCP's translation.
+    """
+    assert entry.robot is not None
+    if entry.tool is None or not np.any(entry.tool.tcp[:3, 3]):
+        return entry.robot
+    return entry.robot.with_end_effector(entry.robot.end_effector_point + entry.tool.tcp[:3, 3])
+
+
+def target_in_base(entry: RobotEntry, base_world: np.ndarray, target: np.ndarray) -> np.ndarray:
+    """A target pose of the TCP (cell frame) as a pose of :func:`planning_robot`'s end effector
+    in the robot's base frame: ``base⁻¹ · target`` with the tool's turn taken off."""
+    inverse = np.eye(4)
+    inverse[:3, :3] = base_world[:3, :3].T
+    inverse[:3, 3] = -base_world[:3, :3].T @ base_world[:3, 3]
+    local = inverse @ target
+    if entry.tool is not None:
+        local[:3, :3] = local[:3, :3] @ entry.tool.tcp[:3, :3].T
+    return local
