@@ -30,6 +30,7 @@ clearance -3.6 mm: arm link 3 – fixture
 
 from ._cell import Cell
 from ._clearance import Clearance
+from ._entries import MAX_ENTRIES
 from ._limits import MAX_BASES, MAX_SAMPLES, MAX_TARGETS, MAX_VOXELS
 from ._links import DEFAULT_RADIUS_FRACTION, LinkModel
 from ._mesh_file import MAX_MESH_BYTES
@@ -55,6 +56,7 @@ __all__ = [
     "Clearance",
     "LinkModel",
     # limits
+    "MAX_ENTRIES",
     "MAX_SAMPLES",
     "MAX_TARGETS",
     "MAX_VOXELS",

@@ -10,12 +10,12 @@ import numpy as np
 from .._errors import InvalidInputError
 from .._validation import check_configuration, one_line
 from ..kinematics import Robot
-from .distance import Obstacle, Obstacles
 from ._entries import MAX_ENTRIES, Entry, RobotEntry, check_parent, resolve_world_poses
 from ._links import LinkModel
 from ._pose import NAME_SEPARATOR, check_cell_name, check_pose
 from ._shapes import Shape
 from ._tool import Tool
+from .distance import Obstacle, Obstacles
 
 if TYPE_CHECKING:
     from ._check import CellCheck
@@ -56,7 +56,7 @@ class Cell:
     >>> cell.pose_of("table/pick")[:3, 3]
     array([55.,  0., 30.])
     >>> print(cell.clearance("arm", [0, 0, 0]))
-    clearance 14.4 mm: arm link 3 – table
+    clearance 16.4 mm: arm link 2 – table
     """
 
     def __init__(self, *, unit: str | None = None, name: str | None = None):
@@ -75,7 +75,9 @@ class Cell:
                 "name", entry.name, "a name not yet in the cell", problem="already in the cell:"
             )
         if len(self._entries) >= MAX_ENTRIES:
-            raise InvalidInputError("name", entry.name, f"at most {MAX_ENTRIES} entries", "the cell is full:")
+            raise InvalidInputError(
+                "name", entry.name, f"at most {MAX_ENTRIES} entries", "the cell is full:"
+            )
         self._entries[entry.name] = entry
         self._cache.clear()
         return entry.name
@@ -114,7 +116,9 @@ class Cell:
         if not isinstance(robot, Robot):
             raise InvalidInputError("robot", one_line(robot), "a Robot", problem="not a robot:")
         if tool is not None and not isinstance(tool, Tool):
-            raise InvalidInputError("tool", one_line(tool), "rc.Tool(…) or None", problem="not a tool:")
+            raise InvalidInputError(
+                "tool", one_line(tool), "rc.Tool(…) or None", problem="not a tool:"
+            )
         mounts = (mount,) if isinstance(mount, str) else tuple(mount)
         for m in mounts:
             check_cell_name(m, "mount")
@@ -132,13 +136,16 @@ class Cell:
         self._add_entry(entry)
 
     def add(self, shape: Shape, *, parent: str | None = None) -> str:
-        """Add an object (``rc.Box``, ``rc.Cylinder``, ``rc.Sphere``, ``rc.Mesh``); returns its name.
+        """Add an object (``rc.Box``, ``rc.Cylinder``, ``rc.Sphere``, ``rc.Mesh``); returns its
+        name.
 
         Its pose is in the parent's frame (default: the cell's). An unnamed object is
         called ``"box1"``, ``"box2"``, … by kind.
         """
         if not isinstance(shape, Shape):
-            raise InvalidInputError("shape", one_line(shape), "rc.Box, rc.Cylinder, rc.Sphere or rc.Mesh")
+            raise InvalidInputError(
+                "shape", one_line(shape), "rc.Box, rc.Cylinder, rc.Sphere or rc.Mesh"
+            )
         name = shape.name
         if name is None:
             count = 1
@@ -146,7 +153,9 @@ class Cell:
                 count += 1
             name = f"{shape.kind}{count}"
             shape = shape.with_name(name)
-        entry = Entry(name, "object", shape.pose, check_parent(self._entries, parent, "parent"), shape)
+        entry = Entry(
+            name, "object", shape.pose, check_parent(self._entries, parent, "parent"), shape
+        )
         return self._add_entry(entry)
 
     def add_frame(self, name: str, pose: Any = None, *, parent: str | None = None) -> str:
@@ -172,8 +181,12 @@ class Cell:
         self._entry(name)
         children = [e.name for e in self._entries.values() if e.parent == name]
         if children:
-            raise InvalidInputError("name", name, f"an entry without children (on it: {children[:5]})",
-                                    problem="other entries are placed on")
+            raise InvalidInputError(
+                "name",
+                name,
+                f"an entry without children (on it: {children[:5]})",
+                problem="other entries are placed on",
+            )
         del self._entries[name]
         self._cache.clear()
 
@@ -181,8 +194,12 @@ class Cell:
 
     def _entry(self, name: Any, field: str = "name") -> Entry:
         if not isinstance(name, str) or name not in self._entries:
-            raise InvalidInputError(field, one_line(name), f"one of {sorted(self._entries)[:20]}",
-                                    problem="not in the cell:")
+            raise InvalidInputError(
+                field,
+                one_line(name),
+                f"one of {sorted(self._entries)[:20]}",
+                problem="not in the cell:",
+            )
         return self._entries[name]
 
     def robot_entry(self, name: Any = None) -> RobotEntry:
@@ -190,8 +207,12 @@ class Cell:
         robots = self.robots
         if name is None:
             if len(robots) != 1:
-                raise InvalidInputError("robot", None, f"one of {list(robots)}",
-                                        problem="the cell has several robots (or none): name one;")
+                raise InvalidInputError(
+                    "robot",
+                    None,
+                    f"one of {list(robots)}",
+                    problem="the cell has several robots (or none): name one;",
+                )
             name = robots[0]
         entry = self._entry(name, "robot")
         if not isinstance(entry, RobotEntry):
@@ -255,7 +276,9 @@ class Cell:
                 else:
                     tri = shape.triangles  # type: ignore[attr-defined]
                     params = np.einsum("ij,fkj->fki", pose[:3, :3], tri) + pose[:3, 3]
-                items.append(Obstacle(shape.kind, pose, params, shape.bounding_radius, shape.inner_radius))
+                items.append(
+                    Obstacle(shape.kind, pose, params, shape.bounding_radius, shape.inner_radius)
+                )
                 names.append(name)
             self._cache["obstacles"] = (Obstacles(items), tuple(names))
         cached: tuple[Obstacles, tuple[str, ...]] = self._cache["obstacles"]
@@ -283,7 +306,9 @@ class Cell:
         assert links is not None
         return links.names
 
-    def link_capsules(self, robot: str | None = None, q: Any = None) -> tuple[np.ndarray, np.ndarray]:
+    def link_capsules(
+        self, robot: str | None = None, q: Any = None
+    ) -> tuple[np.ndarray, np.ndarray]:
         """A robot's capsules in the cell's frame.
 
         Parameters
@@ -322,7 +347,9 @@ class Cell:
 
     # -- questions ---------------------------------------------------------------------
 
-    def clearance(self, robot: str | None = None, q: Any = None, *, others: Any = None) -> Clearance:
+    def clearance(
+        self, robot: str | None = None, q: Any = None, *, others: Any = None
+    ) -> Clearance:
         """The smallest signed distance of a robot to everything else, and the pair.
 
         See :func:`robotconf.cell._clearance.clearance`.
@@ -345,13 +372,17 @@ class Cell:
 
         return reach(self, robot, targets, **options)
 
-    def reach_map(self, robot: str | None = None, region: Any = None, step: Any = None, **options: Any) -> ReachMap:
+    def reach_map(
+        self, robot: str | None = None, region: Any = None, step: Any = None, **options: Any
+    ) -> ReachMap:
         """Branches and manipulability on a voxel grid (see :mod:`._reach_map`)."""
         from ._reach_map import reach_map
 
         return reach_map(self, robot, region, step, **options)
 
-    def place(self, robot: str | None = None, targets: Any = None, region: Any = None, **options: Any) -> Placement:
+    def place(
+        self, robot: str | None = None, targets: Any = None, region: Any = None, **options: Any
+    ) -> Placement:
         """Base positions from which every target is reachable, and the best one."""
         from ._reach_map import place
 
@@ -384,9 +415,13 @@ class Cell:
         return save_cell(self, path)
 
     def __repr__(self) -> str:
-        kinds = {k: sum(e.kind == k for e in self._entries.values()) for k in ("robot", "object", "frame")}
+        kinds = {
+            k: sum(e.kind == k for e in self._entries.values())
+            for k in ("robot", "object", "frame")
+        }
         unit = f", unit={self.unit!r}" if self.unit else ""
-        return f"Cell({kinds['robot']} robots, {kinds['object']} objects, {kinds['frame']} frames{unit})"
+        robots, objects, frames = kinds["robot"], kinds["object"], kinds["frame"]
+        return f"Cell({robots} robots, {objects} objects, {frames} frames{unit})"
 
 
 def check_memory_rows(array: np.ndarray) -> None:
@@ -394,4 +429,6 @@ def check_memory_rows(array: np.ndarray) -> None:
     from ._limits import MAX_SAMPLES
 
     if array.shape[0] > MAX_SAMPLES:
-        raise InvalidInputError("q", f"<{array.shape[0]} rows>", f"at most {MAX_SAMPLES} configurations")
+        raise InvalidInputError(
+            "q", f"<{array.shape[0]} rows>", f"at most {MAX_SAMPLES} configurations"
+        )

@@ -21,6 +21,7 @@ from .._validation import check_finite_number, one_line
 from ..motion import Motion
 from ..programs import Program, ProgramMotion
 from ._clearance import format_length, least
+from ._entries import planning_robot
 from ._limits import MAX_SAMPLES
 from ._pairs import PairDistances, measure_pairs
 
@@ -140,7 +141,18 @@ class CellCheck:
         """The contacts as a pandas table, one row per interval."""
         import pandas as pd
 
-        columns = ["robot", "link", "other", "kind", "start", "end", "depth", "deepest", "move", "move_kind"]
+        columns = [
+            "robot",
+            "link",
+            "other",
+            "kind",
+            "start",
+            "end",
+            "depth",
+            "deepest",
+            "move",
+            "move_kind",
+        ]
         rows = [[getattr(c, k) for k in columns] for c in self.contacts]
         return pd.DataFrame(rows, columns=columns)
 
@@ -165,7 +177,9 @@ def _grid(motions: dict[str, Motion]) -> np.ndarray:
     end = max(float(m.t[-1]) for m in motions.values())
     count = int(np.floor(end / step + 1e-9)) + 1
     if count > MAX_SAMPLES:
-        raise InvalidInputError("dt", step, f"at most {MAX_SAMPLES} samples", problem="too many samples:")
+        raise InvalidInputError(
+            "dt", step, f"at most {MAX_SAMPLES} samples", problem="too many samples:"
+        )
     grid = np.arange(count) * step
     return grid if grid[-1] >= end - 1e-12 else np.append(grid, end)
 
@@ -218,7 +232,8 @@ def _contacts(
             move, kind = index + 1, motion.segments[index].kind
             prefix += f"move {move} ({kind}): "
         how = (
-            f"{format_length(depth, unit)} deep" if depth > 0 or margin <= 0
+            f"{format_length(depth, unit)} deep"
+            if depth > 0 or margin <= 0
             else f"{format_length(-depth, unit)} away (margin {format_length(margin, unit)})"
         )
         text = (
@@ -226,13 +241,26 @@ def _contacts(
             f"{how}, until t = {t[b]:.2f} s"
         )
         found.append(
-            Contact(robot, pairs.link[c], pairs.other[c], pairs.kind[c], float(t[a]), float(t[b]),
-                    depth, float(t[deep]), move, kind, text)
+            Contact(
+                robot,
+                pairs.link[c],
+                pairs.other[c],
+                pairs.kind[c],
+                float(t[a]),
+                float(t[b]),
+                depth,
+                float(t[deep]),
+                move,
+                kind,
+                text,
+            )
         )
     return found, max(len(order) - MAX_CONTACTS, 0)
 
 
-def check(cell: Cell, motion: Any, robot: Any = None, *, margin: Any = 0.0, dt: Any = DEFAULT_DT) -> CellCheck:
+def check(
+    cell: Cell, motion: Any, robot: Any = None, *, margin: Any = 0.0, dt: Any = DEFAULT_DT
+) -> CellCheck:
     """Every contact along a motion, its interval and depth, and the least clearance.
 
     Parameters
@@ -260,34 +288,51 @@ def check(cell: Cell, motion: Any, robot: Any = None, *, margin: Any = 0.0, dt: 
     >>> cell.add_robot("arm", rc.preset("paper"))
     >>> cell.add(rc.Box([10, 10, 40], pose=rc.pose([0, 50, 20]), name="post"))
     'post'
-    >>> prog = rc.Program(cell.robot("arm"), [rc.PTP(q=[1.2, 0, 0])])
+    >>> prog = rc.Program(cell.robot("arm"), [rc.PTP(q=[2.0, 0, 0])])
     >>> result = cell.check(prog)
     >>> print(result.contacts[0].message)
-    move 1 (PTP): link 3 enters 'post' at t = 0.93 s, 8.6 mm deep, until t = 1.37 s
+    move 1 (PTP): link 3 enters 'post' at t = 1.64 s, 8.56 mm deep, until t = 2.01 s
+    >>> result.table[["link", "other", "start", "end"]]
+         link other  start   end
+    0  link 3  post   1.64  2.01
     """
     step = check_finite_number(dt, "dt")
     limit = check_finite_number(margin, "margin")
     given = motion if isinstance(motion, dict) else {cell.robot_entry(robot).name: motion}
     if not given:
         raise InvalidInputError("motion", {}, "a motion, or {robot name: motion}")
-    motions = {cell.robot_entry(name).name: _as_motion(m, f"motion[{name!r}]", step) for name, m in given.items()}
+    motions = {
+        cell.robot_entry(name).name: _as_motion(m, f"motion[{name!r}]", step)
+        for name, m in given.items()
+    }
     for name, m in motions.items():
-        if m.robot != cell.robot(name):
-            raise InvalidInputError(f"motion[{name!r}]", one_line(m), f"a motion of the robot placed as {name!r}")
+        entry = cell.robot_entry(name)
+        if m.robot != entry.robot and m.robot != planning_robot(entry):
+            raise InvalidInputError(
+                f"motion[{name!r}]", one_line(m), f"a motion of the robot placed as {name!r}"
+            )
     t = _grid(motions)
     if t.size > MAX_SAMPLES:
         raise InvalidInputError("motion", f"<{t.size} samples>", f"at most {MAX_SAMPLES} samples")
     q = {name: _on_grid(m, t) for name, m in motions.items()}
     obstacles, names = cell.obstacles()
     pairs = measure_pairs(
-        cell._robot_entries(), cell._world(), obstacles, names, q, t.size, margin=limit, focus=tuple(motions)
+        cell._robot_entries(),
+        cell._world(),
+        obstacles,
+        names,
+        q,
+        t.size,
+        margin=limit,
+        focus=tuple(motions),
     )
     contacts, more = _contacts(pairs, t, motions, limit, cell.unit)
     distance, column = least(pairs)
     k = int(np.argmin(distance)) if distance.size else 0
     pair = (
         (pairs.robot[column[k]], pairs.link[column[k]], pairs.other[column[k]])
-        if pairs.distance.shape[1] else ("", "", "")
+        if pairs.distance.shape[1]
+        else ("", "", "")
     )
     best = float(distance[k]) if distance.size else float("inf")
     return CellCheck(tuple(contacts), t, distance, best, float(t[k]), pair, more, cell.unit)

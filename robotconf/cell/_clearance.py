@@ -59,10 +59,15 @@ class Clearance:
         if np.ndim(self.distance) == 0:
             if not np.isfinite(self.distance):
                 return f"clearance: {self.robot} meets nothing"
-            return f"clearance {format_length(float(self.distance), self.unit)}: {self.robot} {self.link} – {self.other}"
+            gap = format_length(float(self.distance), self.unit)
+            return f"clearance {gap}: {self.robot} {self.link} – {self.other}"
         k = int(np.argmin(self.distance))
         head = f"clearance over {len(self.distance)} configurations, least at #{k}: "
-        return head + format_length(float(self.distance[k]), self.unit) + f": {self.robot} {self.link[k]} – {self.other[k]}"
+        return (
+            head
+            + format_length(float(self.distance[k]), self.unit)
+            + f": {self.robot} {self.link[k]} – {self.other[k]}"
+        )
 
 
 def least(pairs: PairDistances) -> tuple[np.ndarray, np.ndarray]:
@@ -104,7 +109,7 @@ def clearance(cell: Cell, robot: Any, q: Any, others: Any) -> Clearance:
     >>> round(c.distance, 9), c.link, c.other   # 20 − 5 − 3.6 above the end effector
     (11.4, 'link 3', 'ball')
     >>> cell.clearance("arm", [[0, 0, 0], [0, -0.3, 0]]).distance.round(3)
-    array([ 11.4  , -8.6...])
+    array([11.4  , -5.399])
     """
     entry = cell.robot_entry(robot)
     assert entry.robot is not None
@@ -117,7 +122,9 @@ def clearance(cell: Cell, robot: Any, q: Any, others: Any) -> Clearance:
         for name, value in others.items():
             other = cell.coordinates(cell.robot_entry(name).name, value)
             if other.shape[0] not in (1, samples):
-                raise InvalidInputError(f"others[{name!r}]", f"<{other.shape[0]} rows>", f"1 or {samples} rows")
+                raise InvalidInputError(
+                    f"others[{name!r}]", f"<{other.shape[0]} rows>", f"1 or {samples} rows"
+                )
             given[name] = np.broadcast_to(other, (samples, other.shape[1]))
     obstacles, names = cell.obstacles()
     pairs = measure_pairs(
@@ -127,7 +134,11 @@ def clearance(cell: Cell, robot: Any, q: Any, others: Any) -> Clearance:
     if pairs.distance.shape[1] == 0:
         labels: tuple[tuple[str, ...], ...] = (("",) * samples,) * 3
     else:
-        labels = tuple(tuple(np.array(x, dtype=object)[column]) for x in (pairs.link, pairs.other, pairs.kind))
+        labels = tuple(
+            tuple(np.array(x, dtype=object)[column]) for x in (pairs.link, pairs.other, pairs.kind)
+        )
     if np.ndim(q) == 1 or q is None:
-        return Clearance(float(distance[0]), labels[0][0], labels[1][0], labels[2][0], entry.name, cell.unit)
-    return Clearance(distance, *labels, entry.name, cell.unit)  # type: ignore[arg-type]
+        return Clearance(
+            float(distance[0]), labels[0][0], labels[1][0], labels[2][0], entry.name, cell.unit
+        )
+    return Clearance(distance, labels[0], labels[1], labels[2], entry.name, cell.unit)

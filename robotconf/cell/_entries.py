@@ -60,13 +60,18 @@ def resolve_world_poses(entries: dict[str, Entry]) -> dict[str, np.ndarray]:
         name: str | None = start
         while name is not None and name not in world:
             if name in chain:
-                loop = " → ".join([*chain[chain.index(name):], name])
+                loop = " → ".join([*chain[chain.index(name) :], name])
                 raise InvalidInputError(
-                    f"{start}.parent", loop, "parents that lead back to the cell", problem="a cycle of parents:"
+                    f"{start}.parent",
+                    loop,
+                    "parents that lead back to the cell",
+                    problem="a cycle of parents:",
                 )
             if name not in entries:
                 raise InvalidInputError(
-                    f"{chain[-1]}.parent", name, "the name of a robot, object or frame in the cell",
+                    f"{chain[-1]}.parent",
+                    name,
+                    "the name of a robot, object or frame in the cell",
                     problem="no such parent:",
                 )
             chain.append(name)
@@ -84,7 +89,10 @@ def check_parent(entries: dict[str, Entry], parent: Any, field: str) -> str | No
         return None
     if not isinstance(parent, str) or parent not in entries:
         raise InvalidInputError(
-            field, one_line(parent), f"None or one of {sorted(entries)[:20]}", problem="no such parent:"
+            field,
+            one_line(parent),
+            f"None or one of {sorted(entries)[:20]}",
+            problem="no such parent:",
         )
     return parent
 

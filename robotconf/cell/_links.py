@@ -22,8 +22,8 @@ import numpy as np
 from .._errors import InvalidInputError
 from .._validation import check_finite_number, one_line
 from ..kinematics import Robot, characteristic_length
-from .distance import segment_segment_distance
 from ._tool import Tool
+from .distance import segment_segment_distance
 
 __all__ = ["LinkModel", "DEFAULT_RADIUS_FRACTION"]
 
@@ -73,7 +73,11 @@ class LinkModel:
         limits = robot.joint_limits()
         rng = np.random.default_rng(0)
         probes = np.vstack(
-            [robot.q, np.zeros(robot.n), rng.uniform(limits[:, 0], limits[:, 1], (_PROBES, robot.n))]
+            [
+                robot.q,
+                np.zeros(robot.n),
+                rng.uniform(limits[:, 0], limits[:, 1], (_PROBES, robot.n)),
+            ]
         )
         points = _chain_points(robot, probes)
         pairs: list[tuple[int, int]] = []
@@ -85,8 +89,12 @@ class LinkModel:
                 last = i
         self._pairs = np.array(pairs, dtype=np.int64).reshape(-1, 2)
         arm = len(pairs)
+        self._tool_ends: np.ndarray
+        tool_radii: np.ndarray
         self._tool_ends, tool_radii = (
-            tool.segments(self.default_radius) if tool is not None else (np.zeros((0, 2, 3)), np.zeros(0))
+            tool.segments(self.default_radius)
+            if tool is not None
+            else (np.zeros((0, 2, 3)), np.zeros(0))
         )
         self.arm_links = arm
         count = arm + len(tool_radii)
@@ -95,8 +103,14 @@ class LinkModel:
                 "robot", one_line(robot), "a robot with some length (its points all coincide)"
             )
         tool_names = (
-            [tool.name] if len(tool_radii) == 1 else [f"{tool.name} {k + 1}" for k in range(len(tool_radii))]
-        ) if tool is not None else []
+            (
+                [tool.name]
+                if len(tool_radii) == 1
+                else [f"{tool.name} {k + 1}" for k in range(len(tool_radii))]
+            )
+            if tool is not None
+            else []
+        )
         self.names: tuple[str, ...] = tuple([f"link {k + 1}" for k in range(arm)] + tool_names)
         self.radii = np.concatenate([self._arm_radii(radius, arm), tool_radii])
         self.radii.setflags(write=False)
@@ -118,7 +132,9 @@ class LinkModel:
         if isinstance(radius, (list, tuple, np.ndarray)):
             if len(radius) != arm:
                 raise InvalidInputError(
-                    "radius", one_line(radius), f"one number, {arm} numbers (one per link) or a dict"
+                    "radius",
+                    one_line(radius),
+                    f"one number, {arm} numbers (one per link) or a dict",
                 )
             return np.array([self._radius(v, f"radius[{k}]") for k, v in enumerate(radius)])
         return np.full(arm, self._radius(radius, "radius"))
@@ -142,9 +158,15 @@ class LinkModel:
         """A link's position from its number (1…L) or name (``"link 2"``, the tool's)."""
         if isinstance(key, str) and key in self.names:
             return self.names.index(key)
-        if isinstance(key, (int, np.integer)) and not isinstance(key, bool) and 1 <= key <= len(self.names):
+        if (
+            isinstance(key, (int, np.integer))
+            and not isinstance(key, bool)
+            and 1 <= key <= len(self.names)
+        ):
             return int(key) - 1
-        raise InvalidInputError(field, one_line(key), f"a link number 1…{len(self.names)} or one of {self.names}")
+        raise InvalidInputError(
+            field, one_line(key), f"a link number 1…{len(self.names)} or one of {self.names}"
+        )
 
     def capsules(self, q: np.ndarray) -> np.ndarray:
         """Segment ends in the robot's base frame, shape (T, L, 2, 3), for q (T, n)."""
@@ -153,7 +175,10 @@ class LinkModel:
         if not len(self._tool_ends):
             return arm
         flange = self.robot.end_effector_pose(q)  # (T, 4, 4)
-        ends = np.einsum("tij,kej->tkei", flange[:, :3, :3], self._tool_ends) + flange[:, None, None, :3, 3]
+        ends = (
+            np.einsum("tij,kej->tkei", flange[:, :3, :3], self._tool_ends)
+            + flange[:, None, None, :3, 3]
+        )
         return np.concatenate([arm, ends], axis=1)
 
     def _find_self_pairs(self) -> tuple[tuple[int, int], ...]:
@@ -171,9 +196,14 @@ class LinkModel:
             return ()
         reference = self.capsules(self.robot.q[np.newaxis])[0]
         pairs = np.array(candidates)
-        gap = segment_segment_distance(
-            reference[pairs[:, 0], 0], reference[pairs[:, 0], 1],
-            reference[pairs[:, 1], 0], reference[pairs[:, 1], 1],
-        ) - self.radii[pairs[:, 0]] - self.radii[pairs[:, 1]]
+        gap = (
+            segment_segment_distance(
+                reference[pairs[:, 0], 0],
+                reference[pairs[:, 0], 1],
+                reference[pairs[:, 1], 0],
+                reference[pairs[:, 1], 1],
+            )
+            - self.radii[pairs[:, 0]]
+            - self.radii[pairs[:, 1]]
+        )
         return tuple((int(i), int(j)) for (i, j), g in zip(candidates, gap, strict=True) if g > 0.0)
-

@@ -59,12 +59,16 @@ def read_mesh(path: Any, scale: Any = 1.0) -> tuple[np.ndarray, np.ndarray, str,
     robotconf.InvalidInputError: mesh file: not found: 'missing.stl'; allowed: an STL or OBJ file
     """
     if not isinstance(path, (str, os.PathLike)):
-        raise InvalidInputError("mesh file", repr(path)[:80], "a path (str or Path)", problem="not a path:")
+        raise InvalidInputError(
+            "mesh file", repr(path)[:80], "a path (str or Path)", problem="not a path:"
+        )
     factor = _size(scale, "scale")
     target = Path(path)
     suffix = target.suffix.lower()
     if suffix not in MESH_SUFFIXES:
-        raise _refuse(target, f"not a mesh file type ({suffix or 'no suffix'}):", "a .stl or .obj file")
+        raise _refuse(
+            target, f"not a mesh file type ({suffix or 'no suffix'}):", "a .stl or .obj file"
+        )
     try:
         size = target.stat().st_size
         if not target.is_file():
@@ -72,7 +76,9 @@ def read_mesh(path: Any, scale: Any = 1.0) -> tuple[np.ndarray, np.ndarray, str,
     except OSError:
         raise _refuse(target, "not found:") from None
     if size > MAX_MESH_BYTES:
-        raise _refuse(target, f"too large ({size} bytes):", f"files of at most {MAX_MESH_BYTES} bytes")
+        raise _refuse(
+            target, f"too large ({size} bytes):", f"files of at most {MAX_MESH_BYTES} bytes"
+        )
     if size == 0:
         raise _refuse(target, "empty:")
     try:
@@ -90,8 +96,8 @@ def read_mesh(path: Any, scale: Any = 1.0) -> tuple[np.ndarray, np.ndarray, str,
 
     try:
         loaded = trimesh.load(io.BytesIO(raw), file_type=suffix[1:], force="mesh", process=False)
-        vertices = np.asarray(loaded.vertices, dtype=float)
-        faces = np.asarray(loaded.faces, dtype=np.int64)
+        vertices: np.ndarray = np.array(getattr(loaded, "vertices"), dtype=np.float64)
+        faces: np.ndarray = np.array(getattr(loaded, "faces"), dtype=np.int64)
     except Exception as error:  # trimesh raises many kinds on a malformed file
         raise _refuse(target, f"malformed ({type(error).__name__}: {str(error)[:80]}):") from None
     if faces.ndim != 2 or faces.shape[0] == 0 or vertices.shape[0] < 3:
@@ -100,4 +106,4 @@ def read_mesh(path: Any, scale: Any = 1.0) -> tuple[np.ndarray, np.ndarray, str,
         raise _refuse(target, f"too many triangles ({faces.shape[0]}):", f"at most {MAX_TRIANGLES}")
     if not np.all(np.isfinite(vertices)):
         raise _refuse(target, "coordinates that are not finite (NaN or inf):")
-    return vertices * factor, faces, str(path), target.stem
+    return vertices * np.float64(factor), faces, str(path), target.stem

@@ -13,8 +13,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from .._budget import check_memory
-from .distance import Obstacles, capsule_obstacle_distances, capsule_pair_distances
 from ._entries import RobotEntry
+from .distance import Obstacles, capsule_obstacle_distances, capsule_pair_distances
 
 __all__ = ["PairDistances", "measure_pairs", "cell_capsules"]
 
@@ -64,14 +64,20 @@ def measure_pairs(
     """
     chosen = tuple(robots) if focus is None else focus
     links_total = sum(len(e.links.names) for e in robots.values() if e.links is not None)
-    check_memory("samples", samples, 8.0 * samples * links_total * (len(object_names) + links_total) * 6,
-                 "fewer samples (a larger dt) or fewer objects")
+    check_memory(
+        "samples",
+        samples,
+        8.0 * samples * links_total * (len(object_names) + links_total) * 6,
+        "fewer samples (a larger dt) or fewer objects",
+    )
     capsules = {}
     for name, entry in robots.items():
         assert entry.robot is not None
         given = q.get(name, entry.robot.q[np.newaxis])
         caps = cell_capsules(entry, world[name], given)
-        capsules[name] = np.broadcast_to(caps, (samples, *caps.shape[1:])) if len(caps) == 1 else caps
+        capsules[name] = (
+            np.broadcast_to(caps, (samples, *caps.shape[1:])) if len(caps) == 1 else caps
+        )
     columns: list[np.ndarray] = []
     labels: list[tuple[str, str, str, str]] = []
     names = list(robots)
@@ -88,18 +94,24 @@ def measure_pairs(
             labels += [(name, link, obj, "object") for link in model.names for obj in object_names]
         if model.self_pairs:
             pairs = np.array(model.self_pairs)
-            own = capsule_pair_distances(capsules[name], model.radii, capsules[name], model.radii, pairs, margin)
+            own = capsule_pair_distances(
+                capsules[name], model.radii, capsules[name], model.radii, pairs, margin
+            )
             columns.append(own)
             labels += [(name, model.names[i], model.names[j], "self") for i, j in model.self_pairs]
     for x, first in enumerate(names):
-        for second in names[x + 1:]:
+        for second in names[x + 1 :]:
             if first not in chosen and second not in chosen:
                 continue
             m1, m2 = robots[first].links, robots[second].links
             assert m1 is not None and m2 is not None
-            both = capsule_pair_distances(capsules[first], m1.radii, capsules[second], m2.radii, None, margin)
+            both = capsule_pair_distances(
+                capsules[first], m1.radii, capsules[second], m2.radii, None, margin
+            )
             columns.append(both.reshape(samples, -1))
             labels += [(first, l1, f"{second}/{l2}", "robot") for l1 in m1.names for l2 in m2.names]
     distance = np.concatenate(columns, axis=1) if columns else np.full((samples, 0), np.inf)
-    robot, link, other, kind = (tuple(x) for x in zip(*labels, strict=True)) if labels else ((), (), (), ())
+    robot, link, other, kind = (
+        (tuple(x) for x in zip(*labels, strict=True)) if labels else ((), (), (), ())
+    )
     return PairDistances(distance, robot, link, other, kind)

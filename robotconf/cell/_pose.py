@@ -72,8 +72,8 @@ def pose(xyz: Any = (0.0, 0.0, 0.0), rpy: Any = (0.0, 0.0, 0.0)) -> np.ndarray:
 def check_pose(value: Any, field: str) -> np.ndarray:
     """A rigid 4×4 pose as a float array; ``None`` is the identity.
 
-    The rotation is re-orthonormalized (the nearest rotation), so round-off in a typed
-    pose is forgiven and every pose the cell keeps is rigid to round-off.
+    A rotation off by more than round-off (up to 1e-6) is replaced by the nearest
+    rotation, so a typed pose is forgiven and every pose the cell keeps is rigid.
 
     >>> check_pose(None, "pose")[0]
     array([1., 0., 0., 0.])
@@ -102,11 +102,14 @@ def check_pose(value: Any, field: str) -> np.ndarray:
     det = float(np.linalg.det(rotation))
     if drift > POSE_TOLERANCE or abs(det - 1.0) > POSE_TOLERANCE:
         what = "a reflection (det −1)" if det < 0 else f"not orthonormal (RᵀR − I ≤ {drift:.2g})"
-        raise InvalidInputError(field, one_line(rotation), _POSE, problem=f"the rotation is {what}:")
-    u, _, vt = np.linalg.svd(rotation)
-    out = np.eye(4)
-    out[:3, :3] = u @ vt
-    out[:3, 3] = array[:3, 3]
+        raise InvalidInputError(
+            field, one_line(rotation), _POSE, problem=f"the rotation is {what}:"
+        )
+    out = np.array(array, dtype=float)
+    if drift > 1e-12:  # a rotation exact to round-off is kept bit for bit
+        u, _, vt = np.linalg.svd(rotation)
+        out[:3, :3] = u @ vt
+    out[3] = (0.0, 0.0, 0.0, 1.0)
     return out
 
 

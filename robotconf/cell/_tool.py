@@ -52,8 +52,13 @@ class Tool:
         if self.capsules is None:
             return
         allowed = f"a list of 1 to {MAX_TOOL_CAPSULES} (p0, p1, radius) in the flange frame"
-        if not isinstance(self.capsules, (list, tuple)) or not 1 <= len(self.capsules) <= MAX_TOOL_CAPSULES:
-            raise InvalidInputError("tool.capsules", one_line(self.capsules), allowed, problem="not:")
+        if (
+            not isinstance(self.capsules, (list, tuple))
+            or not 1 <= len(self.capsules) <= MAX_TOOL_CAPSULES
+        ):
+            raise InvalidInputError(
+                "tool.capsules", one_line(self.capsules), allowed, problem="not:"
+            )
         checked = []
         for i, item in enumerate(self.capsules):
             field = f"tool.capsules[{i}]"
@@ -62,7 +67,9 @@ class Tool:
             p0, p1 = check_vector3(item[0], f"{field}[0]"), check_vector3(item[1], f"{field}[1]")
             radius = check_finite_number(item[2], f"{field}[2]")
             if not radius > 0.0:
-                raise InvalidInputError(f"{field}[2]", radius, "a radius > 0", problem="must be > 0:")
+                raise InvalidInputError(
+                    f"{field}[2]", radius, "a radius > 0", problem="must be > 0:"
+                )
             checked.append((p0, p1, radius))
         object.__setattr__(self, "capsules", tuple(checked))
 

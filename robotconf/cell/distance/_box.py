@@ -67,7 +67,9 @@ def _overlap(a: np.ndarray, b: np.ndarray, h: np.ndarray) -> np.ndarray:
         axis = np.cross(d, eye[k])
         norm = np.sqrt(dot(axis, axis))
         usable = norm > 1e-12 * np.maximum(length, np.finfo(float).tiny)
-        axes.append(np.where(usable[:, np.newaxis], axis / np.where(usable, norm, 1.0)[:, np.newaxis], 0.0))
+        axes.append(
+            np.where(usable[:, np.newaxis], axis / np.where(usable, norm, 1.0)[:, np.newaxis], 0.0)
+        )
     best = np.full(a.shape[0], -np.inf)
     for axis in axes:
         pa, pb = dot(axis, a), dot(axis, b)

@@ -145,7 +145,10 @@ def segment_cylinder_distance(
     array([ 2., -1.])
     """
     candidates = np.concatenate(
-        [_closed_form_directions(a, b, radius, half_length), _band_directions(a, b, radius, half_length)],
+        [
+            _closed_form_directions(a, b, radius, half_length),
+            _band_directions(a, b, radius, half_length),
+        ],
         axis=1,
     )
     usable = dot(candidates, candidates) > 0.5

@@ -56,7 +56,9 @@ class Obstacles:
         self.inner = np.array([o.inner for o in self.items])
         self.kinds = np.array([o.kind for o in self.items])
         self.rotations = np.array([o.pose[:3, :3] for o in self.items]).reshape(count, 3, 3)
-        self._box = np.array([o.params if o.kind == "box" else np.zeros(3) for o in self.items]).reshape(count, 3)
+        self._box = np.array(
+            [o.params if o.kind == "box" else np.zeros(3) for o in self.items]
+        ).reshape(count, 3)
         self._cyl = np.array(
             [o.params if o.kind == "cylinder" else np.zeros(2) for o in self.items]
         ).reshape(count, 2)
@@ -81,7 +83,9 @@ class Obstacles:
             if kind == "box":
                 out[k] = segment_box_distance(la, lb, 0.5 * self._box[obj])
             elif kind == "cylinder":
-                out[k] = segment_cylinder_distance(la, lb, self._cyl[obj, 0], 0.5 * self._cyl[obj, 1])
+                out[k] = segment_cylinder_distance(
+                    la, lb, self._cyl[obj, 0], 0.5 * self._cyl[obj, 1]
+                )
             else:
                 out[k] = point_segment_distance(np.zeros(3), la, lb) - self._sphere[obj]
         return out - r
@@ -177,9 +181,9 @@ def capsule_pair_distances(
     t = first.shape[0]
     if pairs is None:
         grid = np.indices((first.shape[1], second.shape[1])).reshape(2, -1).T
-        return capsule_pair_distances(first, first_radii, second, second_radii, grid, margin).reshape(
-            t, first.shape[1], second.shape[1]
-        )
+        return capsule_pair_distances(
+            first, first_radii, second, second_radii, grid, margin
+        ).reshape(t, first.shape[1], second.shape[1])
     out = np.full((t, len(pairs)), np.inf)
     if not len(pairs):
         return out

@@ -100,7 +100,9 @@ def segment_triangle_distance(a, b, t0, t1, t2) -> np.ndarray:
         np.minimum(point_triangle_distance(a, t0, t1, t2), point_triangle_distance(b, t0, t1, t2)),
         np.minimum(
             segment_segment_distance(a, b, t0, t1),
-            np.minimum(segment_segment_distance(a, b, t1, t2), segment_segment_distance(a, b, t2, t0)),
+            np.minimum(
+                segment_segment_distance(a, b, t1, t2), segment_segment_distance(a, b, t2, t0)
+            ),
         ),
     )
     touching = (apart <= 0.0) | _crosses(a, b, t0, t1, t2)
