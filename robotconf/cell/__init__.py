@@ -28,8 +28,8 @@ Distances between capsules and shapes: :mod:`robotconf.cell.distance`.
 clearance -3.6 mm: arm link 3 – fixture
 """
 
+from ._answers import CellCheck, CellRun, Clearance, Contact, Placement, Reach, ReachMap
 from ._cell import Cell
-from ._clearance import Clearance
 from ._entries import MAX_ENTRIES
 from ._limits import MAX_BASES, MAX_SAMPLES, MAX_TARGETS, MAX_VOXELS
 from ._links import DEFAULT_RADIUS_FRACTION, LinkModel
@@ -54,6 +54,12 @@ __all__ = [
     "SHAPE_KINDS",
     # answers
     "Clearance",
+    "CellCheck",
+    "Contact",
+    "Reach",
+    "ReachMap",
+    "Placement",
+    "CellRun",
     "LinkModel",
     # limits
     "MAX_ENTRIES",

@@ -18,11 +18,7 @@ from ._tool import Tool
 from .distance import Obstacle, Obstacles
 
 if TYPE_CHECKING:
-    from ._check import CellCheck
-    from ._clearance import Clearance
-    from ._reach import Reach
-    from ._reach_map import Placement, ReachMap
-    from ._run import CellRun
+    from ._answers import CellCheck, CellRun, Clearance, Placement, Reach, ReachMap
 
 __all__ = ["Cell"]
 

@@ -11,7 +11,6 @@ start lies within one sample before ``start``.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -20,141 +19,22 @@ from .._errors import InvalidInputError
 from .._validation import check_finite_number, one_line
 from ..motion import Motion
 from ..programs import Program, ProgramMotion
-from ._clearance import format_length, least
+from ._answers import CellCheck, Contact, format_length
+from ._clearance import least
 from ._entries import planning_robot
 from ._limits import MAX_SAMPLES
 from ._pairs import PairDistances, measure_pairs
 
 if TYPE_CHECKING:
-    import pandas as pd
-
     from ._cell import Cell
 
-__all__ = ["Contact", "CellCheck", "check", "MAX_CONTACTS", "DEFAULT_DT"]
+__all__ = ["check", "MAX_CONTACTS", "DEFAULT_DT"]
 
 #: The most contact intervals listed (the rest are counted).
 MAX_CONTACTS = 1000
 
 #: Sampling step of a program given without a motion (s).
 DEFAULT_DT = 0.01
-
-
-@dataclass(frozen=True)
-class Contact:
-    """One contact interval of one pair.
-
-    Attributes
-    ----------
-    robot, link : str
-        The robot and its capsule.
-    other : str
-        An object, the same robot's link, or ``"robot/link k"``.
-    kind : str
-        ``"object"``, ``"self"`` or ``"robot"``.
-    start, end : float
-        Times of the first and last sample in contact (s).
-    depth : float
-        The deepest penetration over the interval (length units, > 0 when penetrating;
-        with a margin, ``−`` the least distance).
-    deepest : float
-        When it is deepest (s).
-    move : int or None
-        The program move running at ``start`` (from 1), when the motion is a program's.
-    move_kind : str or None
-        ``"PTP"``, ``"LIN"``, ``"CIRC"`` or ``"Wait"``.
-    message : str
-        The sentence, e.g. ``move 3 (LIN): link 4 enters 'fixture' at t = 2.31 s, 4.2 mm deep``.
-    """
-
-    robot: str
-    link: str
-    other: str
-    kind: str
-    start: float
-    end: float
-    depth: float
-    deepest: float
-    move: int | None
-    move_kind: str | None
-    message: str
-
-
-@dataclass(frozen=True)
-class CellCheck:
-    """What ``cell.check`` found.
-
-    Attributes
-    ----------
-    contacts : tuple of Contact
-        In order of start time.
-    t : ndarray, shape (T,)
-        Sample times (s).
-    clearance : ndarray, shape (T,)
-        The least signed distance of any checked pair at each sample.
-    min_clearance : float
-        The least over the motion; ``min_time`` when, ``min_pair`` (robot, link, other).
-    more : int
-        Contact intervals beyond :data:`MAX_CONTACTS` (not listed).
-    unit : str or None
-    """
-
-    contacts: tuple[Contact, ...]
-    t: np.ndarray
-    clearance: np.ndarray
-    min_clearance: float
-    min_time: float
-    min_pair: tuple[str, str, str]
-    more: int = 0
-    unit: str | None = None
-
-    @property
-    def ok(self) -> bool:
-        """No contact."""
-        return not self.contacts
-
-    def __len__(self) -> int:
-        return len(self.contacts)
-
-    def __iter__(self):  # type: ignore[no-untyped-def]
-        return iter(self.contacts)
-
-    @property
-    def sentences(self) -> list[str]:
-        """One sentence per contact, then the least clearance."""
-        lines = [c.message for c in self.contacts]
-        if self.more:
-            lines.append(f"… and {self.more} more contact intervals")
-        if np.isfinite(self.min_clearance):
-            robot, link, other = self.min_pair
-            lines.append(
-                f"least clearance {format_length(self.min_clearance, self.unit)} at "
-                f"t = {self.min_time:.3f} s: {robot} {link} – {other}"
-            )
-        return lines
-
-    def __str__(self) -> str:
-        head = "no contact" if self.ok else f"{len(self.contacts) + self.more} contact(s)"
-        return "\n".join([head, *self.sentences])
-
-    @property
-    def table(self) -> pd.DataFrame:
-        """The contacts as a pandas table, one row per interval."""
-        import pandas as pd
-
-        columns = [
-            "robot",
-            "link",
-            "other",
-            "kind",
-            "start",
-            "end",
-            "depth",
-            "deepest",
-            "move",
-            "move_kind",
-        ]
-        rows = [[getattr(c, k) for k in columns] for c in self.contacts]
-        return pd.DataFrame(rows, columns=columns)
 
 
 def _as_motion(value: Any, field: str, dt: float) -> Motion:

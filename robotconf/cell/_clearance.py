@@ -2,72 +2,19 @@
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import one_line
+from ._answers import Clearance
 from ._pairs import PairDistances, measure_pairs
 
 if TYPE_CHECKING:
     from ._cell import Cell
 
-__all__ = ["Clearance", "clearance", "format_length"]
-
-
-def format_length(value: float, unit: str | None) -> str:
-    """``4.2 mm`` (3 significant digits, at least one decimal for small values)."""
-    text = f"{value:.3g}"
-    return f"{text} {unit}" if unit else text
-
-
-@dataclass(frozen=True)
-class Clearance:
-    """The smallest signed distance of a robot, per configuration, and the pair.
-
-    Attributes
-    ----------
-    distance : float or ndarray, shape (T,)
-        Signed distance (length units): > 0 apart, < 0 the penetration depth. ``inf``
-        when there is nothing to meet.
-    link : str or tuple of str
-        The robot's capsule of the closest pair (``"link 3"``, the tool's name).
-    other : str or tuple of str
-        What it meets: an object's name, ``"link 1"`` of the same robot, or
-        ``"robot2/link 4"``.
-    kind : str or tuple of str
-        ``"object"``, ``"self"`` or ``"robot"``.
-    robot : str
-    unit : str or None
-    """
-
-    distance: Any
-    link: Any
-    other: Any
-    kind: Any
-    robot: str
-    unit: str | None = None
-
-    @property
-    def collides(self) -> Any:
-        """``distance < 0``."""
-        return np.asarray(self.distance) < 0.0
-
-    def __str__(self) -> str:
-        if np.ndim(self.distance) == 0:
-            if not np.isfinite(self.distance):
-                return f"clearance: {self.robot} meets nothing"
-            gap = format_length(float(self.distance), self.unit)
-            return f"clearance {gap}: {self.robot} {self.link} – {self.other}"
-        k = int(np.argmin(self.distance))
-        head = f"clearance over {len(self.distance)} configurations, least at #{k}: "
-        return (
-            head
-            + format_length(float(self.distance[k]), self.unit)
-            + f": {self.robot} {self.link[k]} – {self.other[k]}"
-        )
+__all__ = ["clearance", "least"]
 
 
 def least(pairs: PairDistances) -> tuple[np.ndarray, np.ndarray]:

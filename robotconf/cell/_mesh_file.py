@@ -95,9 +95,9 @@ def read_mesh(path: Any, scale: Any = 1.0) -> tuple[np.ndarray, np.ndarray, str,
     import trimesh
 
     try:
-        loaded = trimesh.load(io.BytesIO(raw), file_type=suffix[1:], force="mesh", process=False)
-        vertices: np.ndarray = np.array(getattr(loaded, "vertices"), dtype=np.float64)
-        faces: np.ndarray = np.array(getattr(loaded, "faces"), dtype=np.int64)
+        loaded: Any = trimesh.load(io.BytesIO(raw), file_type=suffix[1:], force="mesh", process=False)
+        vertices: np.ndarray = np.array(loaded.vertices, dtype=np.float64)
+        faces: np.ndarray = np.array(loaded.faces, dtype=np.int64)
     except Exception as error:  # trimesh raises many kinds on a malformed file
         raise _refuse(target, f"malformed ({type(error).__name__}: {str(error)[:80]}):") from None
     if faces.ndim != 2 or faces.shape[0] == 0 or vertices.shape[0] < 3:

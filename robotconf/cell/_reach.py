@@ -13,7 +13,6 @@ points, and a pose's orientation is left aside for them.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -21,17 +20,15 @@ import numpy as np
 from .._errors import InvalidInputError
 from .._validation import as_float_array, check_finite_number, one_line
 from ..inverse_kinematics import ik_all, recognize
-from ._clearance import format_length
+from ._answers import Reach, format_length
 from ._entries import RobotEntry, planning_robot, target_in_base
 from ._limits import MAX_TARGETS
 from ._pose import check_pose
 
 if TYPE_CHECKING:
-    import pandas as pd
-
     from ._cell import Cell
 
-__all__ = ["Reach", "reach", "evaluate_targets", "read_targets", "POSE_FAMILIES", "POINT_FAMILIES"]
+__all__ = ["reach", "evaluate_targets", "read_targets", "POSE_FAMILIES", "POINT_FAMILIES"]
 
 #: Families whose closed forms need a pose target.
 POSE_FAMILIES = ("spherical-wrist 6R", "UR")
@@ -83,84 +80,6 @@ def read_targets(cell: Cell, targets: Any) -> tuple[list[str], np.ndarray, np.nd
             labels.append("pose at (" + ", ".join(f"{v:.4g}" for v in pose[:3, 3]) + ")")
             is_pose.append(True)
     return labels, np.array(poses), np.array(is_pose, dtype=bool)
-
-
-@dataclass(frozen=True)
-class Reach:
-    """Per target: reachable or not, how many branches, the best one, and why not.
-
-    Attributes
-    ----------
-    targets : tuple of str
-        Labels (a frame's name, or the point).
-    reachable : ndarray of bool, shape (K,)
-        Some branch is within the limits and collision-free.
-    branches : ndarray of int, shape (K,)
-        Closed-form solutions (``len(rc.ik_all(...))``).
-    within_limits : ndarray of int, shape (K,)
-        Of those, within the joint limits.
-    collision_free : ndarray of int, shape (K,)
-        Of those, with clearance ≥ ``margin``.
-    manipulability : ndarray, shape (K,)
-        The best collision-free branch's; NaN when unreachable.
-    q : ndarray, shape (K, n)
-        That branch (NaN when unreachable).
-    clearance : ndarray, shape (K,)
-        The largest clearance of a collision-free branch (``inf`` with nothing near;
-        NaN when unreachable).
-    labels : tuple of tuple of str
-        The collision-free branches' names (``"elbow up"``).
-    reasons : tuple of str
-        Why not, ``""`` when reachable.
-    """
-
-    targets: tuple[str, ...]
-    reachable: np.ndarray
-    branches: np.ndarray
-    within_limits: np.ndarray
-    collision_free: np.ndarray
-    manipulability: np.ndarray
-    q: np.ndarray
-    clearance: np.ndarray
-    labels: tuple[tuple[str, ...], ...]
-    reasons: tuple[str, ...]
-
-    def __len__(self) -> int:
-        return len(self.targets)
-
-    @property
-    def all_reachable(self) -> bool:
-        """Every target is reachable."""
-        return bool(np.all(self.reachable))
-
-    def __str__(self) -> str:
-        lines = []
-        for k, name in enumerate(self.targets):
-            if self.reachable[k]:
-                lines.append(
-                    f"{name}: reachable, {self.collision_free[k]} of {self.branches[k]} branches "
-                    f"({', '.join(self.labels[k])}), manipulability {self.manipulability[k]:.3g}"
-                )
-            else:
-                lines.append(f"{name}: not reachable: {self.reasons[k]}")
-        return "\n".join(lines)
-
-    @property
-    def table(self) -> pd.DataFrame:
-        """One row per target."""
-        import pandas as pd
-
-        return pd.DataFrame(
-            {
-                "target": self.targets,
-                "reachable": self.reachable,
-                "branches": self.branches,
-                "within_limits": self.within_limits,
-                "collision_free": self.collision_free,
-                "manipulability": self.manipulability,
-                "reason": self.reasons,
-            }
-        )
 
 
 def solve_targets(

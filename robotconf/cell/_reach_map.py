@@ -14,7 +14,6 @@ joint limits, the clearance of every branch, manipulability — is one vectorize
 from __future__ import annotations
 
 import copy
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
@@ -22,16 +21,16 @@ import numpy as np
 from .._errors import InvalidInputError
 from .._validation import check_finite_number, check_vector3, one_line
 from ..inverse_kinematics import recognize
-from ._clearance import format_length
+from ._answers import Placement, ReachMap
 from ._entries import planning_robot
 from ._limits import MAX_BASES, MAX_VOXELS
 from ._pose import check_pose
-from ._reach import POSE_FAMILIES, Reach, evaluate_targets, read_targets
+from ._reach import POSE_FAMILIES, evaluate_targets, read_targets
 
 if TYPE_CHECKING:
     from ._cell import Cell
 
-__all__ = ["ReachMap", "Placement", "reach_map", "place", "grid_points"]
+__all__ = ["reach_map", "place", "grid_points"]
 
 
 def grid_points(
@@ -67,46 +66,6 @@ def grid_points(
     axes = [low[k] + spacing * np.arange(shape[k]) for k in range(3)]
     points = np.stack(np.meshgrid(*axes, indexing="ij"), axis=-1).reshape(-1, 3)
     return points, shape  # type: ignore[return-value]
-
-
-@dataclass(frozen=True)
-class ReachMap:
-    """Reach on a voxel grid.
-
-    Attributes
-    ----------
-    points : ndarray, shape (V, 3)
-        Voxel centres (cell frame), x slowest, z fastest.
-    shape : (nx, ny, nz)
-    branches : ndarray of int, shape (V,)
-        Collision-free branches within the limits at each voxel.
-    manipulability : ndarray, shape (V,)
-        The best such branch's (NaN where unreachable).
-    reach : Reach
-        Everything per voxel (all branches, within limits, reasons).
-    """
-
-    points: np.ndarray
-    shape: tuple[int, int, int]
-    branches: np.ndarray
-    manipulability: np.ndarray
-    reach: Reach
-
-    @property
-    def reachable(self) -> np.ndarray:
-        """Voxels with at least one usable branch, shape (V,)."""
-        return self.branches > 0
-
-    def grid(self, what: str = "branches") -> np.ndarray:
-        """``"branches"`` or ``"manipulability"`` as an (nx, ny, nz) array."""
-        if what not in ("branches", "manipulability"):
-            raise InvalidInputError("what", what, "'branches' or 'manipulability'")
-        return getattr(self, what).reshape(self.shape)
-
-    def __str__(self) -> str:
-        count = int(self.reachable.sum())
-        most = int(self.branches.max())
-        return f"reach map: {count} of {len(self.points)} voxels reachable, up to {most} branches"
 
 
 def _orientation(cell: Cell, entry: Any, orientation: Any) -> np.ndarray:
@@ -160,50 +119,6 @@ def reach_map(
     labels = [f"voxel {k}" for k in range(len(points))]
     result = evaluate_targets(cell, entry, labels, poses, np.full(len(points), six), limit)
     return ReachMap(points, shape, result.collision_free, result.manipulability, result)
-
-
-@dataclass(frozen=True)
-class Placement:
-    """Candidate base positions and the best one.
-
-    Attributes
-    ----------
-    positions : ndarray, shape (B, 3)
-        Base origins tried (cell frame).
-    shape : (nx, ny, nz)
-    feasible : ndarray of bool, shape (B,)
-        Every target reachable from there.
-    reached : ndarray of int, shape (B,)
-        How many targets are reachable.
-    margin : ndarray, shape (B,)
-        Least over the targets of the best branch's clearance (NaN where not feasible).
-    manipulability : ndarray, shape (B,)
-        Least over the targets of the best branch's manipulability.
-    best : int or None
-        Index of the best feasible base; ``best_pose`` its base pose (cell frame).
-    unit : str or None
-    """
-
-    positions: np.ndarray
-    shape: tuple[int, int, int]
-    feasible: np.ndarray
-    reached: np.ndarray
-    margin: np.ndarray
-    manipulability: np.ndarray
-    best: int | None
-    best_pose: np.ndarray | None
-    unit: str | None = None
-
-    def __str__(self) -> str:
-        count = int(self.feasible.sum())
-        head = f"{count} of {len(self.positions)} base positions reach every target"
-        if self.best is None:
-            return head + f"; the best reaches {int(self.reached.max())} of them"
-        where = ", ".join(f"{v:.4g}" for v in self.positions[self.best])
-        return (
-            head
-            + f"; best at ({where}), clearance {format_length(self.margin[self.best], self.unit)}"
-        )
 
 
 def place(

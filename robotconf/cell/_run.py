@@ -10,21 +10,21 @@ given directly in moves stay in the robot's base frame, as in any
 from __future__ import annotations
 
 import warnings
-from dataclasses import dataclass
 from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number, one_line
-from ..programs import Move, Program, ProgramMotion, ProgramReport
-from ._check import CellCheck, check
+from ..programs import Move, Program, ProgramMotion
+from ._answers import CellRun
+from ._check import check
 from ._entries import planning_robot, target_in_base
 
 if TYPE_CHECKING:
     from ._cell import Cell
 
-__all__ = ["cell_program", "run", "CellRun"]
+__all__ = ["cell_program", "run"]
 
 
 def cell_program(cell: Cell, robot: Any, moves: Any, **options: Any) -> Program:
@@ -72,46 +72,6 @@ def cell_program(cell: Cell, robot: Any, moves: Any, **options: Any) -> Program:
         except InvalidInputError as error:
             raise error.within(f"moves[{i}]") from None
     return Program(planning_robot(entry), resolved, **options)
-
-
-@dataclass(frozen=True)
-class CellRun:
-    """Every robot's program run at once, checked against the cell and each other.
-
-    Attributes
-    ----------
-    programs : dict of Program
-    motions : dict of ProgramMotion
-    reports : dict of ProgramReport
-        Each program's own check (joint limits, speeds, singularities).
-    check : CellCheck
-        Contacts of all robots side by side in time.
-    cycle_time : float
-        The longest program's duration (s).
-    """
-
-    programs: dict[str, Program]
-    motions: dict[str, ProgramMotion]
-    reports: dict[str, ProgramReport]
-    check: CellCheck
-    cycle_time: float
-
-    @property
-    def ok(self) -> bool:
-        """No contact and no program violation."""
-        return self.check.ok and all(r.ok for r in self.reports.values())
-
-    def __str__(self) -> str:
-        each = ", ".join(f"{name}: {p.duration:.3g} s" for name, p in self.programs.items())
-        lines = [f"cycle time {self.cycle_time:.3g} s ({each})"]
-        for name, report in self.reports.items():
-            if not report.ok:
-                lines.append(
-                    f"{name}: {len(report)} program violation(s), "
-                    f"first: {report.violations[0].message}"
-                )
-        lines.append(str(self.check))
-        return "\n".join(lines)
 
 
 def run(cell: Cell, programs: Any, *, dt: Any = 0.01, margin: Any = 0.0) -> CellRun:
