@@ -54,7 +54,12 @@ def test_a_lin_into_a_box_enters_within_one_sample():
     result = cell.check(prog, dt=dt)
     assert len(result) == 1
     contact = result.contacts[0]
-    assert (contact.link, contact.other, contact.kind, contact.move) == ("link 3", "fixture", "object", 1)
+    assert (contact.link, contact.other, contact.kind, contact.move) == (
+        "link 3",
+        "fixture",
+        "object",
+        1,
+    )
     # The tip's end cap meets the face when the tip is at x = 55 − r.
     expected = _trapezoid_time(55 - R - 40, 22, 10, 20)
     assert expected - 1e-9 <= contact.start <= expected + dt + 1e-9  # within one sample
@@ -111,7 +116,12 @@ def test_two_robots_meet_within_one_sample():
     dt = 0.01
     result = cell.check({"a": move, "b": still}, dt=dt)
     contact = result.contacts[0]
-    assert (contact.robot, contact.link, contact.other, contact.kind) == ("a", "link 3", "b/link 3", "robot")
+    assert (contact.robot, contact.link, contact.other, contact.kind) == (
+        "a",
+        "link 3",
+        "b/link 3",
+        "robot",
+    )
     expected = _trapezoid_time(55 - 2 * R - 40, 12, 4, 8)
     assert expected - 1e-9 <= contact.start <= expected + dt + 1e-9  # within one sample
     assert contact.message.startswith("a: move 1 (LIN): link 3 meets robot 'b' link 3 at t = ")
@@ -124,7 +134,9 @@ def test_a_clear_path_has_no_false_contact_with_a_1_mm_margin():
     top = 20 - R - 1.5
     cell.add(rc.Box([20, 60, 10], pose=rc.pose([60, 0, top - 5]), name="plate"))
     robot = cell.robot("arm")
-    prog = Program(robot, [LIN(position=[60, 10, 20], speed=5)], start=_start_at(robot, [60, -10, 20]))
+    prog = Program(
+        robot, [LIN(position=[60, 10, 20], speed=5)], start=_start_at(robot, [60, -10, 20])
+    )
     clear = cell.check(prog, margin=1.0, dt=0.005)
     assert clear.ok and str(clear).startswith("no contact")
     assert clear.min_clearance == pytest.approx(1.5, abs=1e-9)

@@ -336,7 +336,9 @@ def test_each_rule_catches_a_planted_import(code, check):
 
 def test_a_loop_between_folders_of_one_layer_is_caught():
     # programs and presets share a layer; a lazy import each way is a loop.
-    there = _imports(PACKAGE / "programs" / "_probe.py", "def f():\n    from ..presets import preset\n")
+    there = _imports(
+        PACKAGE / "programs" / "_probe.py", "def f():\n    from ..presets import preset\n"
+    )
     back = _imports(PACKAGE / "presets" / "_probe.py", "def g():\n    from ..programs import PTP\n")
     assert _folder_loops(there + back) == [["presets", "programs"]]
     assert _folder_loops(there) == []

@@ -71,7 +71,7 @@ def load_cell(source: str | os.PathLike[str]) -> Cell:
     ...
     robotconf.InvalidInputError: frames[0].parent: no such parent: 'table'; ...
     """
-    if isinstance(source, str) and source.lstrip("\ufeff").lstrip()[:1] == "{":
+    if isinstance(source, str) and source.lstrip("\ufeff").lstrip()[:1] in ("{", "[", '"'):
         return cell_from_dict(parse_json(source.lstrip("\ufeff")), None)
     if not isinstance(source, (str, os.PathLike)):
         raise InvalidInputError("source", one_line(source), "a path or JSON text", problem="not:")
