@@ -1,4 +1,4 @@
-"""``cell.reach`` against rc.ik_all + the joint limits + cell.clearance; placement by brute force."""
+"""``cell.reach`` against rc.ik_all + joint limits + cell.clearance; placement by brute force."""
 
 from __future__ import annotations
 

@@ -95,7 +95,8 @@ def read_mesh(path: Any, scale: Any = 1.0) -> tuple[np.ndarray, np.ndarray, str,
     import trimesh
 
     try:
-        loaded: Any = trimesh.load(io.BytesIO(raw), file_type=suffix[1:], force="mesh", process=False)
+        kind = suffix[1:]
+        loaded: Any = trimesh.load(io.BytesIO(raw), file_type=kind, force="mesh", process=False)
         vertices: np.ndarray = np.array(loaded.vertices, dtype=np.float64)
         faces: np.ndarray = np.array(loaded.faces, dtype=np.int64)
     except Exception as error:  # trimesh raises many kinds on a malformed file
