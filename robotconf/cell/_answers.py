@@ -131,10 +131,10 @@ class CellCheck:
         In order of start time.
     t : ndarray, shape (T,)
         Sample times (s).
-    clearance : ndarray, shape (T,)
-        The least signed distance of any checked pair at each sample.
     min_clearance : float
-        The least over the motion; ``min_time`` when, ``min_pair`` (robot, link, other).
+        The least signed distance over the motion (exact); ``min_time`` when,
+        ``min_pair`` (robot, link, other). Each sample's least distance is
+        ``cell.clearance(robot, motion.q)`` (it measures more pairs exactly).
     more : int
         Contact intervals beyond :data:`MAX_CONTACTS` (not listed).
     unit : str or None
@@ -142,7 +142,6 @@ class CellCheck:
 
     contacts: tuple[Contact, ...]
     t: np.ndarray
-    clearance: np.ndarray
     min_clearance: float
     min_time: float
     min_pair: tuple[str, str, str]

@@ -57,10 +57,13 @@ def measure_pairs(
     samples: int,
     margin: float = -np.inf,
     focus: tuple[str, ...] | None = None,
+    per_sample: bool = True,
 ) -> PairDistances:
     """Distances of every pair at ``samples`` samples (q per robot: (T, n), or its own).
 
-    ``focus`` keeps only the pairs that involve these robots.
+    ``focus`` keeps only the pairs that involve these robots; ``per_sample`` False
+    measures exactly only the motion's least distance and the pairs closer than
+    ``margin`` (see :func:`~robotconf.cell.distance.capsule_obstacle_distances`).
     """
     chosen = tuple(robots) if focus is None else focus
     links_total = sum(len(e.links.names) for e in robots.values() if e.links is not None)
@@ -86,7 +89,9 @@ def measure_pairs(
         model = entry.links
         assert model is not None
         if len(object_names):
-            env = capsule_obstacle_distances(capsules[name], model.radii, obstacles, margin)
+            env = capsule_obstacle_distances(
+                capsules[name], model.radii, obstacles, margin, per_sample
+            )
             for k, obj in enumerate(object_names):
                 if obj in entry.mount:
                     env[:, model.static, k] = np.inf
@@ -95,7 +100,7 @@ def measure_pairs(
         if model.self_pairs:
             pairs = np.array(model.self_pairs)
             own = capsule_pair_distances(
-                capsules[name], model.radii, capsules[name], model.radii, pairs, margin
+                capsules[name], model.radii, capsules[name], model.radii, pairs, margin, per_sample
             )
             columns.append(own)
             labels += [(name, model.names[i], model.names[j], "self") for i, j in model.self_pairs]
@@ -106,7 +111,7 @@ def measure_pairs(
             m1, m2 = robots[first].links, robots[second].links
             assert m1 is not None and m2 is not None
             both = capsule_pair_distances(
-                capsules[first], m1.radii, capsules[second], m2.radii, None, margin
+                capsules[first], m1.radii, capsules[second], m2.radii, None, margin, per_sample
             )
             columns.append(both.reshape(samples, -1))
             labels += [(first, l1, f"{second}/{l2}", "robot") for l1 in m1.names for l2 in m2.names]

@@ -17,8 +17,10 @@ and each gives candidate directions:
 - the smooth regions, with ``w = e ± H z``: ``F = n·w + R|n_⊥|`` is stationary where
   ``n_⊥ ∥ w_⊥`` and ``n = (sin β ŵ_⊥, cos β)`` with
   ``(sin β, cos β) ∥ ±(|w_⊥| ∓ R, w_z)`` (closed forms, 16 directions);
-- the band, a great circle: a 1-D search (64 samples, then golden-section refinement
-  of the three best local minima to round-off).
+- the band, a great circle: a 1-D search (64 samples, then Newton's method from the
+  two best local minima and from the band's points nearest the poles, where the
+  ``R|n_⊥|`` term dips in a cusp narrower than the samples; Newton converges
+  quadratically to round-off).
 
 ``F`` is evaluated exactly at every candidate and the least value kept: an extra
 candidate can only overestimate ``min F``, so the answer is exact once the minimizer is
@@ -31,13 +33,12 @@ import numpy as np
 
 from ._segments import dot
 
-__all__ = ["segment_cylinder_distance", "BAND_SAMPLES", "BAND_STEPS"]
+__all__ = ["segment_cylinder_distance", "BAND_SAMPLES", "BAND_MINIMA", "BAND_STEPS"]
 
-#: Samples of the band circle before refinement, and golden-section steps per minimum.
+#: Samples of the band circle, how many of its local minima are refined, and Newton steps.
 BAND_SAMPLES = 64
-BAND_STEPS = 64
-
-_GOLDEN = (np.sqrt(5.0) - 1.0) / 2.0
+BAND_MINIMA = 2
+BAND_STEPS = 8
 
 
 def _support(n: np.ndarray, a: np.ndarray, b: np.ndarray, radius: np.ndarray, half: np.ndarray):
@@ -87,36 +88,48 @@ def _band_basis(d: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
 
 def _band_directions(a, b, radius, half) -> np.ndarray:
     u, v = _band_basis(b - a)
-
-    def directions(theta: np.ndarray) -> np.ndarray:
-        return np.cos(theta)[..., None] * u[:, None, :] + np.sin(theta)[..., None] * v[:, None, :]
+    # On the band n ⊥ d, so n·a = n·b: with n = cos θ u + sin θ v and z = n_z,
+    # G(θ) = α cos θ + β sin θ + R √(1 − z²) + H |z|, four numbers per pair.
+    alpha, beta = dot(u, a)[:, None], dot(v, a)[:, None]
+    gamma, delta = u[:, 2:3], v[:, 2:3]
+    r, h = radius[:, None], half[:, None]
 
     def value(theta: np.ndarray) -> np.ndarray:
-        return _support(directions(theta), a, b, radius, half)
+        z = np.cos(theta) * gamma + np.sin(theta) * delta
+        return (
+            np.cos(theta) * alpha
+            + np.sin(theta) * beta
+            + r * np.sqrt(np.maximum(1.0 - z * z, 0.0))
+            + h * np.abs(z)
+        )
 
     step = 2.0 * np.pi / BAND_SAMPLES
     grid = np.arange(BAND_SAMPLES) * step
     samples = value(np.broadcast_to(grid, (a.shape[0], BAND_SAMPLES)))
     local = (samples <= np.roll(samples, 1, axis=1)) & (samples <= np.roll(samples, -1, axis=1))
-    ranked = np.argsort(np.where(local, samples, np.inf), axis=1)[:, :3]
-    lo = grid[ranked] - step
-    hi = grid[ranked] + step
-    x1 = hi - _GOLDEN * (hi - lo)
-    x2 = lo + _GOLDEN * (hi - lo)
-    f1, f2 = value(x1), value(x2)
+    best = grid[np.argsort(np.where(local, samples, np.inf), axis=1)[:, :BAND_MINIMA]]
+    # Where the band passes near a pole, R√(1 − z²) dips in a cusp narrower than the
+    # samples: start there too (the band's points nearest ±z, where G'' is large).
+    pole = np.arctan2(delta, gamma)
+    start = np.concatenate([best, pole, pole + np.pi], axis=1)
+    theta = start.copy()
+    # Newton's method on G' from those starts, kept within one sample of them. Its
+    # kinks (z = 0: the band meets the equator; |z| = 1: a pole) are closed-form
+    # candidates already, so only smooth minima are sought here.
     for _ in range(BAND_STEPS):
-        left = f1 <= f2
-        hi = np.where(left, x2, hi)
-        lo = np.where(left, lo, x1)
-        new = np.where(left, hi - _GOLDEN * (hi - lo), lo + _GOLDEN * (hi - lo))
-        f_new = value(new)
-        x2, f2, x1, f1 = (
-            np.where(left, x1, new),
-            np.where(left, f1, f_new),
-            np.where(left, new, x2),
-            np.where(left, f_new, f2),
+        c, s = np.cos(theta), np.sin(theta)
+        z = c * gamma + s * delta
+        dz = -s * gamma + c * delta
+        w = np.sqrt(np.maximum(1.0 - z * z, 1e-300))
+        lean = h * np.sign(z) - r * z / w
+        slope = -s * alpha + c * beta + dz * lean
+        curve = -c * alpha - s * beta - z * lean - r * dz * dz / (w * w * w)
+        move = np.where(
+            curve > 0.0, -slope / np.where(curve > 0.0, curve, 1.0), -np.sign(slope) * step / 4
         )
-    return directions(np.concatenate([x1, x2], axis=1))
+        theta = np.clip(theta + move, start - step, start + step)
+    theta = np.concatenate([theta, start], axis=1)
+    return np.cos(theta)[..., None] * u[:, None, :] + np.sin(theta)[..., None] * v[:, None, :]
 
 
 def segment_cylinder_distance(

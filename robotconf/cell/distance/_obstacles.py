@@ -9,8 +9,10 @@ first gets cheap bounds from bounding balls — the capsule's ball about its mid
 
 (``R_in``: a ball about the centre inside the object; for a mesh ``−R_out``). The centre
 distances of all pairs come from one matrix product. Only pairs whose lower bound does not
-exceed the cutoff (the least upper bound of the sample, or a margin) are measured exactly;
-the others are reported as ``+inf`` ("farther than the cutoff").
+exceed the cutoff are measured exactly; the others are reported as ``+inf`` ("farther
+than the cutoff"). The cutoff is a margin, or the least upper bound of each sample (every
+sample's least distance exact), or of the whole motion (only its least distance exact:
+``cell.check`` asks for contacts and the motion's least clearance, which prunes far more).
 """
 
 from __future__ import annotations
@@ -123,7 +125,11 @@ def _centre_distance(m: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarr
 
 
 def capsule_obstacle_distances(
-    segments: np.ndarray, radii: np.ndarray, obstacles: Obstacles, margin: float = -np.inf
+    segments: np.ndarray,
+    radii: np.ndarray,
+    obstacles: Obstacles,
+    margin: float = -np.inf,
+    per_sample: bool = True,
 ) -> np.ndarray:
     """Signed distances of capsules to objects, shape (T, L, O); ``inf`` where pruned.
 
@@ -137,6 +143,9 @@ def capsule_obstacle_distances(
         Pairs are measured exactly when their lower bound is at most
         ``max(margin, least upper bound of their sample)``: every sample's least
         distance is exact, and so is every pair closer than ``margin``.
+    per_sample : bool
+        False: the least upper bound over all samples instead, so only the least
+        distance of the whole motion (and pairs closer than ``margin``) is exact.
     """
     t, links = segments.shape[:2]
     out = np.full((t, links, len(obstacles)), np.inf)
@@ -148,11 +157,16 @@ def capsule_obstacle_distances(
     r = np.broadcast_to(radii, (t, links)).reshape(-1)
     gap, slack = _centre_distance(mid, obstacles.centers)
     upper = (gap + slack + half[:, None] - r[:, None] - obstacles.inner[None]).reshape(t, -1)
-    cutoff = np.maximum(upper.min(axis=1), margin)
+    cutoff = np.maximum(upper.min(axis=1) if per_sample else np.full(t, upper.min()), margin)
     lower = gap - slack - (half + r)[:, None] - obstacles.bound[None]
-    rows, cols = np.nonzero(lower <= np.repeat(cutoff, links)[:, None])
+    limit = np.repeat(cutoff, links)
+    rows, cols = np.nonzero(lower <= limit[:, None])
     if len(rows):
         flat_a, flat_b = a.reshape(-1, 3), b.reshape(-1, 3)
+        # Second stage: the segment itself (not its ball) against the object's ball.
+        near = point_segment_distance(obstacles.centers[cols], flat_a[rows], flat_b[rows])
+        keep = near - r[rows] - obstacles.bound[cols] <= limit[rows] + 4.0 * _EPS * (1.0 + near)
+        rows, cols = rows[keep], cols[keep]
         out.reshape(-1, len(obstacles))[rows, cols] = obstacles.exact(
             flat_a[rows], flat_b[rows], r[rows], cols
         )
@@ -166,6 +180,7 @@ def capsule_pair_distances(
     second_radii: np.ndarray,
     pairs: np.ndarray | None = None,
     margin: float = -np.inf,
+    per_sample: bool = True,
 ) -> np.ndarray:
     """Signed distances between two sets of capsules per sample; ``inf`` where pruned.
 
@@ -175,14 +190,14 @@ def capsule_pair_distances(
     first_radii, second_radii : ndarray, shapes (L1,), (L2,)
     pairs : ndarray of int, shape (P, 2), optional
         Only these (i, j); the result is then (T, P), else (T, L1, L2).
-    margin : float
+    margin, per_sample
         As for :func:`capsule_obstacle_distances`.
     """
     t = first.shape[0]
     if pairs is None:
         grid = np.indices((first.shape[1], second.shape[1])).reshape(2, -1).T
         return capsule_pair_distances(
-            first, first_radii, second, second_radii, grid, margin
+            first, first_radii, second, second_radii, grid, margin, per_sample
         ).reshape(t, first.shape[1], second.shape[1])
     out = np.full((t, len(pairs)), np.inf)
     if not len(pairs):
@@ -195,7 +210,7 @@ def capsule_pair_distances(
     h1, h2 = 0.5 * np.sqrt(dot(b1 - a1, b1 - a1)), 0.5 * np.sqrt(dot(b2 - a2, b2 - a2))
     upper = gap + h1 + h2 - r
     lower = gap - h1 - h2 - r
-    cutoff = np.maximum(upper.min(axis=1), margin)
+    cutoff = np.maximum(upper.min(axis=1) if per_sample else np.full(t, upper.min()), margin)
     rows, cols = np.nonzero(lower <= cutoff[:, None])
     if len(rows):
         out[rows, cols] = (
