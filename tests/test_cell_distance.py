@@ -192,3 +192,46 @@ def test_cylinder_cases_by_hand():
     # beside the side; along the axis through it; off the rim at (1, 0, 1)
     expected = [2.0, -1.0, np.sqrt(2)]
     assert np.allclose(segment_cylinder_distance(a, b, one, one), expected, rtol=0, atol=1e-12)
+
+
+def test_the_broad_phase_never_hides_the_least_distance():
+    """Pruned queries against measuring every pair exactly, rotated objects of every kind."""
+    import robotconf as rc
+    from robotconf.cell.distance import capsule_obstacle_distances
+
+    rng = np.random.default_rng(9)
+    cell = rc.Cell()
+    cell.add_robot("arm", rc.preset("paper"), mount="table")
+    cell.add(rc.Box([200, 200, 10], pose=rc.pose([0, 0, -5]), name="table"))
+    for k in range(12):
+        pose = rc.pose(rng.uniform(-60, 60, 3) + [0, 0, 40], rng.uniform(-3, 3, 3))
+        kind = k % 4
+        if kind == 0:
+            cell.add(rc.Box(rng.uniform(2, 30, 3), pose=pose))
+        elif kind == 1:
+            cell.add(rc.Cylinder(rng.uniform(1, 10), rng.uniform(2, 40), pose=pose))
+        elif kind == 2:
+            cell.add(rc.Sphere(rng.uniform(1, 10), pose=pose))
+        else:
+            corners = rng.uniform(-15, 15, (5, 3))
+            cell.add(rc.Mesh(corners, [[0, 1, 2], [0, 2, 3], [1, 3, 4]], pose=pose))
+    segments, radii = cell.link_capsules("arm", rng.uniform(-3, 3, (3000, 3)))
+    obstacles, names = cell.obstacles()
+    t, links = segments.shape[:2]
+    a, b = segments[..., 0, :].reshape(-1, 3), segments[..., 1, :].reshape(-1, 3)
+    r = np.tile(radii, t)
+    every = np.stack(
+        [obstacles.exact(a, b, r, np.full(len(a), k)) for k in range(len(names))], axis=1
+    ).reshape(t, links, -1)
+    skip = np.zeros((links, len(names)), dtype=bool)
+    skip[0, 0] = True  # the column stands on the table
+    every[:, skip] = np.inf
+    least = every.reshape(t, -1).min(axis=1)
+    each = capsule_obstacle_distances(segments, radii, obstacles, skip=skip)
+    assert np.array_equal(each.reshape(t, -1).min(axis=1), least)
+    once = capsule_obstacle_distances(segments, radii, obstacles, margin=2.0, per_sample=False)
+    once[:, skip] = np.inf
+    assert once.min() == least.min()
+    close = every < 2.0
+    assert np.array_equal(once[close], every[close])  # every pair within the margin is exact
+    assert np.all(np.isinf(once) | (once == every))

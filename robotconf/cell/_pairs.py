@@ -89,12 +89,12 @@ def measure_pairs(
         model = entry.links
         assert model is not None
         if len(object_names):
-            env = capsule_obstacle_distances(
-                capsules[name], model.radii, obstacles, margin, per_sample
-            )
+            skip = np.zeros((len(model.names), len(object_names)), dtype=bool)
             for k, obj in enumerate(object_names):
-                if obj in entry.mount:
-                    env[:, model.static, k] = np.inf
+                skip[:, k] = model.static & (obj in entry.mount)
+            env = capsule_obstacle_distances(
+                capsules[name], model.radii, obstacles, margin, per_sample, skip
+            )
             columns.append(env.reshape(samples, -1))
             labels += [(name, link, obj, "object") for link in model.names for obj in object_names]
         if model.self_pairs:

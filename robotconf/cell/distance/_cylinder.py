@@ -120,7 +120,7 @@ def _band_directions(a, b, radius, half) -> np.ndarray:
         c, s = np.cos(theta), np.sin(theta)
         z = c * gamma + s * delta
         dz = -s * gamma + c * delta
-        w = np.sqrt(np.maximum(1.0 - z * z, 1e-300))
+        w = np.sqrt(np.maximum(1.0 - z * z, 1e-24))  # w³ stays a float at a pole
         lean = h * np.sign(z) - r * z / w
         slope = -s * alpha + c * beta + dz * lean
         curve = -c * alpha - s * beta - z * lean - r * dz * dz / (w * w * w)

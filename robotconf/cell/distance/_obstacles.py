@@ -1,5 +1,7 @@
 """Distances of many capsules to the cell's objects and to each other, with a broad phase.
 
+(See :func:`capsule_obstacle_distances` for the three stages against objects.)
+
 Exact distances (:mod:`._box`, :mod:`._cylinder`, :mod:`._triangle`, :mod:`._segments`)
 cost tens of operations per pair; most pairs of a motion are far apart. So every pair
 first gets cheap bounds from bounding balls — the capsule's ball about its midpoint
@@ -47,6 +49,24 @@ class Obstacle:
     inner: float
 
 
+def _extent(item: Obstacle) -> np.ndarray:
+    """Half sizes of an axis-aligned box around the object, about its pose's origin."""
+    turn = item.pose[:3, :3]
+    if item.kind == "box":
+        return np.abs(turn) @ (0.5 * item.params)
+    if item.kind == "cylinder":
+        axis = turn[:, 2]
+        return item.params[0] * np.sqrt(np.maximum(1.0 - axis**2, 0.0)) + 0.5 * item.params[
+            1
+        ] * np.abs(axis)
+    if item.kind == "sphere":
+        return np.full(3, item.params[0])
+    corners = item.params.reshape(-1, 3)  # a mesh's triangles, already in the cell frame
+    return np.maximum(
+        corners.max(axis=0) - item.pose[:3, 3], item.pose[:3, 3] - corners.min(axis=0)
+    )
+
+
 class Obstacles:
     """The objects of a cell, arranged for vectorized queries."""
 
@@ -65,12 +85,39 @@ class Obstacles:
             [o.params if o.kind == "cylinder" else np.zeros(2) for o in self.items]
         ).reshape(count, 2)
         self._sphere = np.array([o.params[0] if o.kind == "sphere" else 0.0 for o in self.items])
+        extent = np.array([_extent(o) for o in self.items]).reshape(count, 3)
+        self.low = self.centers - extent  # axis-aligned boxes around each object (cell frame)
+        self.high = self.centers + extent
 
     def __len__(self) -> int:
         return len(self.items)
 
     def _local(self, points: np.ndarray, index: np.ndarray) -> np.ndarray:
         return np.einsum("nji,nj->ni", self.rotations[index], points - self.centers[index])
+
+    def lower_bound(self, a: np.ndarray, b: np.ndarray, r: np.ndarray, index: np.ndarray):
+        """A cheap lower bound of each capsule's signed distance to objects ``index``, (N,).
+
+        A box: the largest separation along its three face normals (the capsule spans
+        ``|m_k| ± (|d_k|/2 + r)`` there); a cylinder: along its axis, and across it from
+        the axis; a sphere: exact; a mesh: its bounding ball against the segment. Each is
+        the separation along some direction, never more than the signed distance, and
+        tight where a face is nearest — a long link over a large table, say.
+        """
+        la, lb = self._local(a, index), self._local(b, index)
+        m = 0.5 * (la + lb)
+        e = 0.5 * np.abs(lb - la)
+        kinds = self.kinds[index]
+        box = np.max(np.abs(m) - 0.5 * self._box[index] - e, axis=1)
+        axial = np.abs(m[:, 2]) - 0.5 * self._cyl[index, 1] - e[:, 2]
+        radial = np.hypot(m[:, 0], m[:, 1]) - self._cyl[index, 0] - np.hypot(e[:, 0], e[:, 1])
+        ball = point_segment_distance(np.zeros(3), la, lb)
+        out = np.select(
+            [kinds == "box", kinds == "cylinder", kinds == "sphere"],
+            [box, np.maximum(axial, radial), ball - self._sphere[index]],
+            ball - self.bound[index],
+        )
+        return out - r
 
     def exact(self, a: np.ndarray, b: np.ndarray, r: np.ndarray, index: np.ndarray) -> np.ndarray:
         """Signed distances of capsules (a, b, r) to objects ``index``, shape (N,)."""
@@ -115,13 +162,20 @@ class Obstacles:
         return out
 
 
-def _centre_distance(m: np.ndarray, c: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
-    """|m_i − c_j| for all pairs via one matrix product, and its round-off bound."""
-    mm = dot(m, m)[..., :, None]
-    cc = dot(c, c)[..., None, :]
-    squared = mm + cc - 2.0 * (m @ np.swapaxes(c, -1, -2))
-    slack = 4.0 * np.sqrt(_EPS * (mm + cc))
-    return np.sqrt(np.maximum(squared, 0.0)), slack
+def _box_separation(low: np.ndarray, high: np.ndarray, obstacles: Obstacles) -> np.ndarray:
+    """Gaps between capsules' and objects' axis-aligned boxes, (M, O) (negative: overlap)."""
+    out = np.maximum(
+        low[:, None, 0] - obstacles.high[None, :, 0], obstacles.low[None, :, 0] - high[:, None, 0]
+    )
+    for k in (1, 2):
+        np.maximum(out, low[:, None, k] - obstacles.high[None, :, k], out=out)
+        np.maximum(out, obstacles.low[None, :, k] - high[:, None, k], out=out)
+    return out
+
+
+#: How many of the most promising pairs (per sample, or in all) are measured first to
+#: set the cutoff.
+PROBES = 32
 
 
 def capsule_obstacle_distances(
@@ -130,8 +184,14 @@ def capsule_obstacle_distances(
     obstacles: Obstacles,
     margin: float = -np.inf,
     per_sample: bool = True,
+    skip: np.ndarray | None = None,
 ) -> np.ndarray:
     """Signed distances of capsules to objects, shape (T, L, O); ``inf`` where pruned.
+
+    Three stages: the gap between axis-aligned boxes around each capsule and each object
+    (all pairs, a few comparisons each), then the separation along each object's own axes
+    (:meth:`Obstacles.lower_bound`), then the exact distance for the pairs whose bounds
+    do not exceed the cutoff.
 
     Parameters
     ----------
@@ -140,34 +200,68 @@ def capsule_obstacle_distances(
     radii : ndarray, shape (L,)
     obstacles : Obstacles
     margin : float
-        Pairs are measured exactly when their lower bound is at most
-        ``max(margin, least upper bound of their sample)``: every sample's least
-        distance is exact, and so is every pair closer than ``margin``.
+        Pairs closer than ``margin`` are always measured exactly.
     per_sample : bool
-        False: the least upper bound over all samples instead, so only the least
-        distance of the whole motion (and pairs closer than ``margin``) is exact.
+        True: the cutoff of each sample is ``max(margin, d)`` with ``d`` the exact
+        distance of its most promising pair, so every sample's least distance is exact.
+        False: one cutoff, ``max(margin, U)`` with U the least exact distance of the
+        :data:`PROBES` most promising pairs of the motion, so only the motion's least
+        distance (and every pair closer than ``margin``) is exact.
+    skip : ndarray of bool, shape (L, O), optional
+        Pairs never measured (``inf``): a robot's base links and what it stands on.
     """
     t, links = segments.shape[:2]
-    out = np.full((t, links, len(obstacles)), np.inf)
-    if not len(obstacles):
+    count = len(obstacles)
+    out = np.full((t, links, count), np.inf)
+    if not count:
         return out
-    a, b = segments[..., 0, :], segments[..., 1, :]
-    mid = 0.5 * (a + b).reshape(-1, 3)
-    half = 0.5 * np.sqrt(dot(b - a, b - a)).reshape(-1)
+    flat_a = segments[..., 0, :].reshape(-1, 3)
+    flat_b = segments[..., 1, :].reshape(-1, 3)
     r = np.broadcast_to(radii, (t, links)).reshape(-1)
-    gap, slack = _centre_distance(mid, obstacles.centers)
-    upper = (gap + slack + half[:, None] - r[:, None] - obstacles.inner[None]).reshape(t, -1)
-    cutoff = np.maximum(upper.min(axis=1) if per_sample else np.full(t, upper.min()), margin)
-    lower = gap - slack - (half + r)[:, None] - obstacles.bound[None]
-    limit = np.repeat(cutoff, links)
+    low = np.minimum(flat_a, flat_b) - r[:, None]
+    high = np.maximum(flat_a, flat_b) + r[:, None]
+    lower = _box_separation(low, high, obstacles)
+    if skip is not None:
+        lower[np.tile(skip, (t, 1))] = np.inf
+    flat = lower.reshape(t, links * count)
+    if per_sample:
+        best = np.argmin(flat, axis=1)
+        rows = np.arange(t) * links + best // count
+        cols = best % count
+        usable = np.isfinite(flat[np.arange(t), best])
+        known = np.full(t, np.inf)
+        known[usable] = obstacles.exact(
+            flat_a[rows[usable]], flat_b[rows[usable]], r[rows[usable]], cols[usable]
+        )
+        limit = np.repeat(np.maximum(known, margin), links)
+    else:
+        probe = np.argpartition(lower.ravel(), min(PROBES, lower.size - 1))[:PROBES]
+        probe = probe[np.isfinite(lower.ravel()[probe])]
+        rows, cols = np.divmod(probe, count)
+        known = (
+            obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
+            if len(probe)
+            else np.array([np.inf])
+        )
+        limit = np.full(len(flat_a), max(float(np.min(known)), margin))
+    # The bounds and the exact distance round differently: a bound equal to the cutoff
+    # may come out a few ulps above it, so both stages allow the round-off of the scene.
+    size = max(
+        float(np.abs(flat_a).max()),
+        float(np.abs(flat_b).max()),
+        float(np.abs(obstacles.low).max()),
+        float(np.abs(obstacles.high).max()),
+    )
+    with np.errstate(invalid="ignore"):
+        limit = np.where(
+            np.isfinite(limit), limit + 64.0 * _EPS * (1.0 + size + np.abs(limit)), limit
+        )
     rows, cols = np.nonzero(lower <= limit[:, None])
     if len(rows):
-        flat_a, flat_b = a.reshape(-1, 3), b.reshape(-1, 3)
-        # Second stage: the segment itself (not its ball) against the object's ball.
-        near = point_segment_distance(obstacles.centers[cols], flat_a[rows], flat_b[rows])
-        keep = near - r[rows] - obstacles.bound[cols] <= limit[rows] + 4.0 * _EPS * (1.0 + near)
+        bound = obstacles.lower_bound(flat_a[rows], flat_b[rows], r[rows], cols)
+        keep = bound <= limit[rows]
         rows, cols = rows[keep], cols[keep]
-        out.reshape(-1, len(obstacles))[rows, cols] = obstacles.exact(
+        out.reshape(-1, count)[rows, cols] = obstacles.exact(
             flat_a[rows], flat_b[rows], r[rows], cols
         )
     return out
