@@ -235,3 +235,27 @@ def test_the_broad_phase_never_hides_the_least_distance():
     close = every < 2.0
     assert np.array_equal(once[close], every[close])  # every pair within the margin is exact
     assert np.all(np.isinf(once) | (once == every))
+
+
+def test_the_broad_phase_between_capsules_never_hides_the_least_distance():
+    from robotconf.cell.distance import capsule_pair_distances, segment_segment_distance
+
+    rng = np.random.default_rng(10)
+    first = rng.uniform(-1, 1, (500, 4, 2, 3)).cumsum(axis=0) * 0.1
+    second = rng.uniform(-1, 1, (500, 3, 2, 3)).cumsum(axis=0) * 0.1 + 0.3
+    r1, r2 = rng.uniform(0.01, 0.1, 4), rng.uniform(0.01, 0.1, 3)
+    every = np.empty((500, 4, 3))
+    for p in range(4):
+        for q in range(3):
+            every[:, p, q] = segment_segment_distance(
+                first[:, p, 0], first[:, p, 1], second[:, q, 0], second[:, q, 1]
+            ) - r1[p] - r2[q]
+    # The same formula on differently strided arrays may differ in the last bit.
+    each = capsule_pair_distances(first, r1, second, r2)
+    least = every.reshape(500, -1).min(axis=1)
+    assert np.allclose(each.reshape(500, -1).min(axis=1), least, rtol=0, atol=1e-15)
+    once = capsule_pair_distances(first, r1, second, r2, margin=0.05, per_sample=False)
+    assert abs(once.min() - every.min()) <= 1e-15
+    assert np.allclose(once[every < 0.05], every[every < 0.05], rtol=0, atol=1e-15)
+    seen = np.isfinite(once)
+    assert np.allclose(once[seen], every[seen], rtol=0, atol=1e-15)

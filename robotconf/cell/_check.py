@@ -94,7 +94,9 @@ def _contacts(
     pairs: PairDistances, t: np.ndarray, motions: dict[str, Motion], margin: float, unit: str | None
 ) -> tuple[list[Contact], int]:
     mask = pairs.distance < margin
-    column, first, last = _runs(mask)
+    touched = np.flatnonzero(mask.any(axis=0))  # contacts are rare: scan only those pairs
+    column, first, last = _runs(mask[:, touched])
+    column = touched[column]
     order = np.lexsort((column, first))
     found = []
     several = len(motions) > 1

@@ -170,16 +170,17 @@ class LinkModel:
 
     def capsules(self, q: np.ndarray) -> np.ndarray:
         """Segment ends in the robot's base frame, shape (T, L, 2, 3), for q (T, n)."""
-        points = _chain_points(self.robot, q)
-        arm = points[:, self._pairs]  # (T, arm, 2, 3)
+        t = q.shape[0]
+        points = np.zeros((t, self.robot.n + 2, 3))
+        points[:, 1:-1] = self.robot.frame_origins(q)
         if not len(self._tool_ends):
-            return arm
+            points[:, -1] = self.robot.end_effector(q)
+            return points[:, self._pairs]  # (T, arm, 2, 3)
         flange = self.robot.end_effector_pose(q)  # (T, 4, 4)
-        ends = (
-            np.einsum("tij,kej->tkei", flange[:, :3, :3], self._tool_ends)
-            + flange[:, None, None, :3, 3]
-        )
-        return np.concatenate([arm, ends], axis=1)
+        points[:, -1] = flange[:, :3, 3]
+        ends = flange[:, :3, :3] @ self._tool_ends.reshape(-1, 3).T + flange[:, :3, 3:]
+        tool = np.swapaxes(ends, 1, 2).reshape(t, -1, 2, 3)
+        return np.concatenate([points[:, self._pairs], tool], axis=1)
 
     def _find_self_pairs(self) -> tuple[tuple[int, int], ...]:
         count = len(self.names)

@@ -45,7 +45,8 @@ def cell_capsules(entry: RobotEntry, world: np.ndarray, q: np.ndarray) -> np.nda
     """A robot's capsules in the cell's frame, (T, L, 2, 3), for q (T, n)."""
     assert entry.links is not None
     local = entry.links.capsules(q)
-    return np.einsum("ij,tlej->tlei", world[:3, :3], local) + world[:3, 3]
+    turned = local.reshape(-1, 3) @ world[:3, :3].T  # one (N, 3)·(3, 3) product
+    return (turned + world[:3, 3]).reshape(local.shape)
 
 
 def measure_pairs(

@@ -1,6 +1,6 @@
 """Distances of many capsules to the cell's objects and to each other, with a broad phase.
 
-(See :func:`capsule_obstacle_distances` for the three stages against objects.)
+(See :func:`capsule_obstacle_distances` for the stages against objects.)
 
 Exact distances (:mod:`._box`, :mod:`._cylinder`, :mod:`._triangle`, :mod:`._segments`)
 cost tens of operations per pair; most pairs of a motion are far apart. So every pair
@@ -26,7 +26,7 @@ import numpy as np
 
 from ._box import segment_box_distance
 from ._cylinder import segment_cylinder_distance
-from ._segments import dot, point_segment_distance, segment_segment_distance
+from ._segments import point_segment_distance, segment_segment_distance
 from ._triangle import segment_triangle_distance
 
 __all__ = ["Obstacle", "Obstacles", "capsule_obstacle_distances", "capsule_pair_distances"]
@@ -173,9 +173,33 @@ def _box_separation(low: np.ndarray, high: np.ndarray, obstacles: Obstacles) -> 
     return out
 
 
-#: How many of the most promising pairs (per sample, or in all) are measured first to
-#: set the cutoff.
-PROBES = 32
+#: Samples per chunk of the first stage: a chunk's links are boxed over its samples.
+CHUNK = 32
+
+#: How many chunk pairs with the least bounds are measured first (every sample of them)
+#: to set the cutoff of a whole-motion query.
+PROBES = 4
+
+
+def _chunk_boxes(low: np.ndarray, high: np.ndarray, size: int) -> tuple[np.ndarray, np.ndarray]:
+    """Boxes around each link over each chunk of ``size`` samples: (chunks·L, 3) twice."""
+    t, links = low.shape[:2]
+    full = t // size
+    parts_low = [low[: full * size].reshape(full, size, links * 3).min(axis=1)]
+    parts_high = [high[: full * size].reshape(full, size, links * 3).max(axis=1)]
+    if t > full * size:  # the last, shorter chunk
+        parts_low.append(low[full * size :].reshape(-1, links * 3).min(axis=0, keepdims=True))
+        parts_high.append(high[full * size :].reshape(-1, links * 3).max(axis=0, keepdims=True))
+    return np.concatenate(parts_low).reshape(-1, 3), np.concatenate(parts_high).reshape(-1, 3)
+
+
+def _expand(chunk_rows: np.ndarray, cols: np.ndarray, links: int, t: int):
+    """(sample·L + link, object) of every sample of the chunk pairs (chunk·L + link, object)."""
+    chunk, link = np.divmod(chunk_rows, links)
+    sample = (chunk * CHUNK)[:, None] + np.arange(CHUNK)[None, :]
+    inside = sample < t
+    rows = (sample * links + link[:, None])[inside]
+    return rows, np.broadcast_to(cols[:, None], sample.shape)[inside]
 
 
 def capsule_obstacle_distances(
@@ -188,10 +212,11 @@ def capsule_obstacle_distances(
 ) -> np.ndarray:
     """Signed distances of capsules to objects, shape (T, L, O); ``inf`` where pruned.
 
-    Three stages: the gap between axis-aligned boxes around each capsule and each object
-    (all pairs, a few comparisons each), then the separation along each object's own axes
-    (:meth:`Obstacles.lower_bound`), then the exact distance for the pairs whose bounds
-    do not exceed the cutoff.
+    Four stages, each a lower bound of the signed distance: the gap between a box around
+    each link over :data:`CHUNK` samples and a box around each object (a few comparisons
+    per chunk, link and object), the same per sample for the pairs left, the separation
+    along each object's own axes (:meth:`Obstacles.lower_bound`), and the exact distance
+    for the pairs whose bounds do not exceed the cutoff.
 
     Parameters
     ----------
@@ -202,53 +227,50 @@ def capsule_obstacle_distances(
     margin : float
         Pairs closer than ``margin`` are always measured exactly.
     per_sample : bool
-        True: the cutoff of each sample is ``max(margin, d)`` with ``d`` the exact
-        distance of its most promising pair, so every sample's least distance is exact.
-        False: one cutoff, ``max(margin, U)`` with U the least exact distance of the
-        :data:`PROBES` most promising pairs of the motion, so only the motion's least
-        distance (and every pair closer than ``margin``) is exact.
+        True: each sample's cutoff is ``max(margin, d)`` with ``d`` the exact distance of
+        its chunk's most promising pair, so every sample's least distance is exact.
+        False: one cutoff, ``max(margin, U)`` with U the least exact distance over the
+        :data:`PROBES` most promising chunk pairs, so only the motion's least distance
+        (and every pair closer than ``margin``) is exact.
     skip : ndarray of bool, shape (L, O), optional
         Pairs never measured (``inf``): a robot's base links and what it stands on.
     """
     t, links = segments.shape[:2]
     count = len(obstacles)
     out = np.full((t, links, count), np.inf)
-    if not count:
+    if not count or not t:
         return out
     flat_a = segments[..., 0, :].reshape(-1, 3)
     flat_b = segments[..., 1, :].reshape(-1, 3)
     r = np.broadcast_to(radii, (t, links)).reshape(-1)
     low = np.minimum(flat_a, flat_b) - r[:, None]
     high = np.maximum(flat_a, flat_b) + r[:, None]
-    lower = _box_separation(low, high, obstacles)
+    chunk_low, chunk_high = _chunk_boxes(low.reshape(t, links, 3), high.reshape(t, links, 3), CHUNK)
+    coarse = _box_separation(chunk_low, chunk_high, obstacles)  # (chunks·L, O)
     if skip is not None:
-        lower[np.tile(skip, (t, 1))] = np.inf
-    flat = lower.reshape(t, links * count)
+        coarse[np.tile(skip, (len(coarse) // links, 1))] = np.inf
+    chunks = len(coarse) // links
+    per_chunk = coarse.reshape(chunks, links * count)
     if per_sample:
-        best = np.argmin(flat, axis=1)
-        rows = np.arange(t) * links + best // count
-        cols = best % count
-        usable = np.isfinite(flat[np.arange(t), best])
+        best = np.argmin(per_chunk, axis=1)
+        usable = np.isfinite(per_chunk[np.arange(chunks), best])
+        rows, cols = _expand(
+            (np.arange(chunks) * links + best // count)[usable], (best % count)[usable], links, t
+        )
         known = np.full(t, np.inf)
-        known[usable] = obstacles.exact(
-            flat_a[rows[usable]], flat_b[rows[usable]], r[rows[usable]], cols[usable]
-        )
-        limit = np.repeat(np.maximum(known, margin), links)
+        known[rows // links] = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
+        limit = np.maximum(known, margin)
     else:
-        probe = np.argpartition(lower.ravel(), min(PROBES, lower.size - 1))[:PROBES]
-        probe = probe[np.isfinite(lower.ravel()[probe])]
-        rows, cols = np.divmod(probe, count)
-        known = (
-            obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
-            if len(probe)
-            else np.array([np.inf])
-        )
-        limit = np.full(len(flat_a), max(float(np.min(known)), margin))
+        order = np.argsort(coarse.ravel())[:PROBES]
+        order = order[np.isfinite(coarse.ravel()[order])]
+        rows, cols = _expand(order // count, order % count, links, t)
+        known = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols) if len(rows) else np.inf
+        limit = np.full(t, max(float(np.min(known)), margin))
     # The bounds and the exact distance round differently: a bound equal to the cutoff
-    # may come out a few ulps above it, so both stages allow the round-off of the scene.
+    # may come out a few ulps above it, so every stage allows the round-off of the scene.
     size = max(
-        float(np.abs(flat_a).max()),
-        float(np.abs(flat_b).max()),
+        float(np.abs(low).max()),
+        float(np.abs(high).max()),
         float(np.abs(obstacles.low).max()),
         float(np.abs(obstacles.high).max()),
     )
@@ -256,14 +278,20 @@ def capsule_obstacle_distances(
         limit = np.where(
             np.isfinite(limit), limit + 64.0 * _EPS * (1.0 + size + np.abs(limit)), limit
         )
-    rows, cols = np.nonzero(lower <= limit[:, None])
-    if len(rows):
-        bound = obstacles.lower_bound(flat_a[rows], flat_b[rows], r[rows], cols)
-        keep = bound <= limit[rows]
-        rows, cols = rows[keep], cols[keep]
-        out.reshape(-1, count)[rows, cols] = obstacles.exact(
-            flat_a[rows], flat_b[rows], r[rows], cols
-        )
+    padded = np.concatenate([limit, np.full(chunks * CHUNK - t, -np.inf)])
+    chunk_limit = np.repeat(padded.reshape(chunks, CHUNK).max(axis=1), links)
+    chunk_rows, cols = np.nonzero(coarse <= chunk_limit[:, None])
+    rows, cols = _expand(chunk_rows, cols, links, t)
+    if not len(rows):
+        return out
+    sample_limit = limit[rows // links]
+    gap = np.maximum(low[rows] - obstacles.high[cols], obstacles.low[cols] - high[rows]).max(axis=1)
+    keep = gap <= sample_limit
+    rows, cols, sample_limit = rows[keep], cols[keep], sample_limit[keep]
+    bound = obstacles.lower_bound(flat_a[rows], flat_b[rows], r[rows], cols)
+    keep = bound <= sample_limit
+    rows, cols = rows[keep], cols[keep]
+    out.reshape(-1, count)[rows, cols] = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
     return out
 
 
@@ -294,21 +322,61 @@ def capsule_pair_distances(
             first, first_radii, second, second_radii, grid, margin, per_sample
         ).reshape(t, first.shape[1], second.shape[1])
     out = np.full((t, len(pairs)), np.inf)
-    if not len(pairs):
+    if not len(pairs) or not t:
         return out
     i, j = pairs[:, 0], pairs[:, 1]
-    a1, b1 = first[:, i, 0], first[:, i, 1]
-    a2, b2 = second[:, j, 0], second[:, j, 1]
     r = first_radii[i] + second_radii[j]
-    gap = np.sqrt(dot(0.5 * (a1 + b1 - a2 - b2), 0.5 * (a1 + b1 - a2 - b2)))
-    h1, h2 = 0.5 * np.sqrt(dot(b1 - a1, b1 - a1)), 0.5 * np.sqrt(dot(b2 - a2, b2 - a2))
-    upper = gap + h1 + h2 - r
-    lower = gap - h1 - h2 - r
-    cutoff = np.maximum(upper.min(axis=1) if per_sample else np.full(t, upper.min()), margin)
-    rows, cols = np.nonzero(lower <= cutoff[:, None])
-    if len(rows):
-        out[rows, cols] = (
-            segment_segment_distance(a1[rows, cols], b1[rows, cols], a2[rows, cols], b2[rows, cols])
-            - r[cols]
-        )
+
+    def boxes(caps: np.ndarray, radii: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        grow = radii[None, :, None]
+        a, b = caps[:, :, 0], caps[:, :, 1]
+        return np.minimum(a, b) - grow, np.maximum(a, b) + grow  # (T, L, 3) each
+
+    low1, high1 = boxes(first, first_radii)
+    low2, high2 = boxes(second, second_radii)
+    chunk_low1, chunk_high1 = _chunk_boxes(low1, high1, CHUNK)
+    chunk_low2, chunk_high2 = _chunk_boxes(low2, high2, CHUNK)
+    chunks = len(chunk_low1) // first.shape[1]
+    c1 = np.arange(chunks)[:, None] * first.shape[1] + i[None, :]
+    c2 = np.arange(chunks)[:, None] * second.shape[1] + j[None, :]
+    coarse = np.maximum(chunk_low1[c1] - chunk_high2[c2], chunk_low2[c2] - chunk_high1[c1]).max(
+        axis=2
+    )
+
+    def exact(sample: np.ndarray, pair: np.ndarray) -> np.ndarray:
+        p1, p2 = first[sample, i[pair]], second[sample, j[pair]]
+        return segment_segment_distance(p1[:, 0], p1[:, 1], p2[:, 0], p2[:, 1]) - r[pair]
+
+    def expand(chunk: np.ndarray, pair: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        sample = (chunk * CHUNK)[:, None] + np.arange(CHUNK)[None, :]
+        inside = sample < t
+        return sample[inside], np.broadcast_to(pair[:, None], sample.shape)[inside]
+
+    if per_sample:
+        best = np.argmin(coarse, axis=1)
+        sample, pair = expand(np.arange(chunks), best)
+        limit = np.full(t, np.inf)
+        limit[sample] = exact(sample, pair)
+        limit = np.maximum(limit, margin)
+    else:
+        order = np.argsort(coarse.ravel())[:PROBES]
+        sample, pair = expand(*np.divmod(order, len(pairs)))
+        limit = np.full(t, max(float(exact(sample, pair).min()), margin))
+    size = max(
+        float(np.abs(low1).max()),
+        float(np.abs(high1).max()),
+        float(np.abs(low2).max()),
+        float(np.abs(high2).max()),
+    )
+    limit = limit + 64.0 * _EPS * (1.0 + size + np.abs(limit))
+    padded = np.concatenate([limit, np.full(chunks * CHUNK - t, -np.inf)])
+    chunk, pair = np.nonzero(coarse <= padded.reshape(chunks, CHUNK).max(axis=1)[:, None])
+    sample, pair = expand(chunk, pair)
+    gap = np.maximum(
+        low1[sample, i[pair]] - high2[sample, j[pair]],
+        low2[sample, j[pair]] - high1[sample, i[pair]],
+    ).max(axis=1)
+    keep = gap <= limit[sample]
+    sample, pair = sample[keep], pair[keep]
+    out[sample, pair] = exact(sample, pair)
     return out
