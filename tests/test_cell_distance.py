@@ -247,9 +247,13 @@ def test_the_broad_phase_between_capsules_never_hides_the_least_distance():
     every = np.empty((500, 4, 3))
     for p in range(4):
         for q in range(3):
-            every[:, p, q] = segment_segment_distance(
-                first[:, p, 0], first[:, p, 1], second[:, q, 0], second[:, q, 1]
-            ) - r1[p] - r2[q]
+            every[:, p, q] = (
+                segment_segment_distance(
+                    first[:, p, 0], first[:, p, 1], second[:, q, 0], second[:, q, 1]
+                )
+                - r1[p]
+                - r2[q]
+            )
     # The same formula on differently strided arrays may differ in the last bit.
     each = capsule_pair_distances(first, r1, second, r2)
     least = every.reshape(500, -1).min(axis=1)
