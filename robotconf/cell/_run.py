@@ -46,7 +46,8 @@ def cell_program(cell: Cell, robot: Any, moves: Any, **options: Any) -> Program:
     >>> cell.add_robot("arm", rc.preset("paper"), base=rc.pose([100, 0, 0]))
     >>> cell.add_frame("pick", rc.pose([150, 10, 30]))
     'pick'
-    >>> prog = cell.program("arm", [rc.PTP(q=[0, 0.3, -0.5]), rc.LIN(frame="pick", speed=10)])
+    >>> moves = [rc.PTP(q=[0, 0.3, -0.5]), rc.LIN(frame="pick", speed=10, accel=5)]
+    >>> prog = cell.program("arm", moves)
     >>> prog.simulate(0.01).trace[-1].round(9) + 0.0  # in the robot's base frame
     array([50., 10., 30.])
     """

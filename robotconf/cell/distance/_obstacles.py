@@ -264,8 +264,8 @@ def capsule_obstacle_distances(
         order = np.argsort(coarse.ravel())[:PROBES]
         order = order[np.isfinite(coarse.ravel()[order])]
         rows, cols = _expand(order // count, order % count, links, t)
-        known = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols) if len(rows) else np.inf
-        limit = np.full(t, max(float(np.min(known)), margin))
+        found = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
+        limit = np.full(t, max(float(np.min(found, initial=np.inf)), margin))
     # The bounds and the exact distance round differently: a bound equal to the cutoff
     # may come out a few ulps above it, so every stage allows the round-off of the scene.
     size = max(
