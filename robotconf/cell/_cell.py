@@ -8,7 +8,7 @@ from typing import TYPE_CHECKING, Any
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import check_configuration, one_line
+from .._validation import as_float_array, check_configuration, one_line
 from ..kinematics import Robot
 from ._entries import MAX_ENTRIES, Entry, RobotEntry, check_parent, resolve_world_poses
 from ._links import LinkModel
@@ -286,8 +286,11 @@ class Cell:
     def coordinates(self, robot: str | None, q: Any) -> np.ndarray:
         """``q`` for a robot as (T, n) (one configuration gives T = 1)."""
         model = self.robot(robot)
-        array = np.asarray(q, dtype=float) if not isinstance(q, (str, bytes)) else None
-        if array is not None and array.ndim == 2 and array.shape[1] == model.n:
+        allowed = f"{model.n} coordinates, or (T, {model.n}) of them"
+        if np.ndim(q) == 2:
+            array = as_float_array(q, "q", allowed)
+            if array.shape[1] != model.n:
+                raise InvalidInputError("q", f"<array of shape {array.shape}>", allowed)
             check_memory_rows(array)
             if not np.all(np.isfinite(array)):
                 raise InvalidInputError("q", "<array with NaN or inf>", "finite coordinates")

@@ -8,7 +8,7 @@ numbers are plain floats and tuples. ``to_dict`` gives the JSON form of a move.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, fields, replace
+from dataclasses import dataclass, field, fields, replace
 from typing import Any, ClassVar
 
 import numpy as np
@@ -156,7 +156,7 @@ class PTP(Move):
     pose: Any = None
     position: Any = None
     profile: str = "trapezoidal"
-    frame: Any = None
+    frame: Any = field(default=None, repr=False)
 
     def checked(self, n: int, names: Sequence[str]) -> PTP:
         target = _one_target(self, ("q", "pose", "position", "frame"))
@@ -202,7 +202,7 @@ class LIN(Move):
     speed: Any = None
     accel: Any = None
     orientation: str = "slerp"
-    frame: Any = None
+    frame: Any = field(default=None, repr=False)
 
     def checked(self, n: int, names: Sequence[str]) -> LIN:
         target = _one_target(self, ("position", "pose", "frame"))
@@ -250,7 +250,7 @@ class CIRC(Move):
     speed: Any = None
     accel: Any = None
     orientation: str = "slerp"
-    frame: Any = None
+    frame: Any = field(default=None, repr=False)
 
     def checked(self, n: int, names: Sequence[str]) -> CIRC:
         if self.frame is not None:
@@ -286,6 +286,22 @@ class Wait(Move):
 
     def checked(self, n: int, names: Sequence[str]) -> Wait:
         return replace(self, seconds=seconds(self.seconds, "seconds"))
+
+
+def _shows_frame(cls: type[Move]) -> None:
+    """A move's repr names its cell frame only when it has one (as ``to_dict`` writes it)."""
+    plain = cls.__repr__
+
+    def __repr__(self: Move) -> str:
+        text = plain(self)
+        frame = getattr(self, "frame", None)
+        return text if frame is None else f"{text[:-1]}, frame={frame!r})"
+
+    cls.__repr__ = __repr__  # type: ignore[method-assign,assignment]
+
+
+for _cls in (PTP, LIN, CIRC):
+    _shows_frame(_cls)
 
 
 #: Move type name (the JSON ``"type"``) → class.
