@@ -224,3 +224,12 @@ def test_bad_cell_input_names_the_field():
     with pytest.raises(rc.InvalidInputError) as caught:
         rc.pose([0, 0, float("nan")])
     assert caught.value.field.startswith("xyz")
+
+
+@pytest.mark.parametrize("q", [[["x", 1, 2]], [[True, 0, 0]], [[1, 2]], [[np.nan, 0, 0]], [1, 2]])
+def test_bad_coordinates_name_q(q):
+    cell = rc.Cell()
+    cell.add_robot("arm", rc.preset("paper"))
+    with pytest.raises(rc.InvalidInputError) as caught:
+        cell.clearance("arm", q)
+    assert caught.value.field.startswith("q")
