@@ -41,6 +41,7 @@ RUNTIME_FILES = (
     "robotconf/scene/js/glue.js",
     "robotconf/scene/js/loader.js",
     "robotconf/scene/js/widget.js",
+    "robotconf/panel/form/js/controls.js",
     "robotconf/panel/form/js/form.js",
     "robotconf/panel/form/js/form.css",
 )

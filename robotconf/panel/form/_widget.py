@@ -28,7 +28,8 @@ import traitlets
 __all__ = ["Form", "FormEvent", "EVENTS", "find_control"]
 
 _HERE = Path(__file__).parent / "js"
-_SCRIPT = (_HERE / "form.js").read_text("utf-8")
+#: The control views first, then the form that uses them: one module for the page.
+_SCRIPT = "\n".join((_HERE / name).read_text("utf-8") for name in ("controls.js", "form.js"))
 _STYLE = (_HERE / "form.css").read_text("utf-8")
 
 #: What the page reports: a slider drag or a stepped box (``value``), typed text sent
