@@ -117,7 +117,7 @@ def search(
     draws : ndarray, shape (S − 1, n)
         The random starts, the same for every target.
     proved : ndarray of bool, shape (T,)
-        Targets proved out of reach: they get their first start only, within the ranges.
+        Targets proved out of reach: no runs here (they keep their first start).
     max_iterations : int
         Most steps per run.
     limits : bool
@@ -133,8 +133,9 @@ def search(
     clipped = bool(np.any(problem.moving & ~problem.wraps))
     retries = limits and clipped
     # Runs per target: the starts within the ranges, then (retries) the same starts
-    # without them; a target proved out of reach gets its first start only.
-    length = np.where(proved, 1, starts * (2 if retries else 1))
+    # without them; a target proved out of reach gets none: the second-order descent
+    # (``_closest``) takes it from its first start to the closest configuration.
+    length = np.where(proved, 0, starts * (2 if retries else 1))
     done = np.zeros(count, dtype=int)  # runs read so far, per target
     while True:
         open_ = np.flatnonzero((state.status != CONVERGED) & (done < length))
