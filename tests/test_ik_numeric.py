@@ -501,24 +501,27 @@ def test_the_solvers_rotation_vector_agrees_with_the_kinematics_one() -> None:
 def one_after_another(
     problem: Problem, first: np.ndarray, draws: np.ndarray, proved: np.ndarray, iterations: int
 ) -> Search:
-    """Reference: each target's runs in the documented order, one run at a time."""
+    """Reference: each target's runs in the documented order, one run at a time: q0, then
+    the random starts nearest first (ranked by the pose each leaves, computed here)."""
     state = Search.begin(problem, first, True)
-    starts = [first] + [np.tile(d, (len(first), 1)) for d in draws]
-    runs = [(k, False) for k in range(len(starts))] + [(k, True) for k in range(len(starts))]
     for i in range(len(first)):
         one = np.array([i])
+        pose = problem.robot.end_effector_pose(problem.project(draws, False))
+        energy = problem.energy(problem.errors_from_pose(np.full(len(draws), i), pose))
+        starts = [first[i]] + [draws[k] for k in np.argsort(energy, kind="stable")]
+        runs = [(k, False) for k in range(len(starts))] + [(k, True) for k in range(len(starts))]
         for k, free in runs:
             if state.status[i] == CONVERGED or proved[i]:
                 break  # a target proved out of reach is left to the closest-point descent
-            run = solve(problem, one, starts[k][one], iterations, not free)
+            run = solve(problem, one, starts[k][np.newaxis], iterations, not free)
             (state.read_free if free else state.read_limited)(one, run)
     return state
 
 
 def test_waves_read_the_runs_in_their_documented_order(monkeypatch: pytest.MonkeyPatch) -> None:
-    # A PUMA whose shoulder may only turn 0.4 rad: many targets need a second start, a
+    # A PUMA whose shoulder may only turn 0.8 rad: many targets need a second start, a
     # run without the ranges, or end past a joint limit; two are far out of reach.
-    robot = preset("puma560").with_limits(1, (0.2, 0.6))
+    robot = preset("puma560").with_limits(1, (0.2, 1.0))
     target = robot.end_effector_pose(random_q(preset("puma560"), 16, seed=4))
     target[:2, :3, 3] *= 3.0
     problem = pose_problem(robot, target)

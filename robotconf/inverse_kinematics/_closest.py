@@ -36,7 +36,7 @@ import numpy as np
 from ._lm import CONVERGED, ITERATION_LIMIT, STALLED, STATIONARY, blocked_joints
 from ._problem import Problem
 
-__all__ = ["Closest", "descend", "LOCAL_MINIMUM_RATIO"]
+__all__ = ["Closest", "descend", "LOCAL_MINIMUM_RATIO", "CHUNK"]
 
 #: ``‖g‖ / (‖J‖ ‖e‖)`` at most this (and no negative curvature): a local minimum.
 LOCAL_MINIMUM_RATIO = 1e-6
@@ -130,10 +130,15 @@ class _Curvature:
         return step * shrink[:, np.newaxis]
 
 
+#: Runs descended at once: the Hessian's pass holds 2m + 1 configurations per run.
+CHUNK = 512
+
+
 def descend(
     problem: Problem, index: np.ndarray, q: np.ndarray, limits: bool, max_iterations: int
 ) -> Closest:
-    """Second-order descent from ``q`` (B, n) for targets ``index`` (see the module notes).
+    """Second-order descent from ``q`` (B, n) for targets ``index`` (see the module notes),
+    :data:`CHUNK` runs at a time (each run on its own: the chunks change no answer).
 
     Parameters
     ----------
@@ -151,6 +156,20 @@ def descend(
     -------
     Closest
     """
+    if len(index) <= CHUNK:
+        return _descend(problem, index, q, limits, max_iterations)
+    parts = [
+        _descend(problem, index[k : k + CHUNK], q[k : k + CHUNK], limits, max_iterations)
+        for k in range(0, len(index), CHUNK)
+    ]
+    return Closest(
+        *(np.concatenate([getattr(p, f) for p in parts]) for f in Closest.__dataclass_fields__)
+    )
+
+
+def _descend(
+    problem: Problem, index: np.ndarray, q: np.ndarray, limits: bool, max_iterations: int
+) -> Closest:
     count = len(index)
     joints = problem.joints
     scale = problem.column_scale[joints]

@@ -64,7 +64,7 @@ MU_START, MU_MIN, MU_MAX = 1.0, 1e-6, 1e8
 MU_DOWN, MU_UP = 0.25, 4.0
 #: A run whose ``E`` fell by less than 1 % over this many steps is crawling (typically
 #: along a joint limit) and stops as stalled.
-PROGRESS_WINDOW, PROGRESS_FACTOR = 10, 0.99
+PROGRESS_WINDOW, PROGRESS_FACTOR = 5, 0.5
 #: ``‖Jᵀe‖ / (‖J‖ ‖e‖)`` below this: the error is orthogonal to every joint motion.
 STATIONARY_RATIO = 1e-9
 
@@ -112,6 +112,14 @@ class _Joints:
     clipped: np.ndarray
     scale: np.ndarray
 
+    def __post_init__(self) -> None:
+        margin = 1e-12 * np.maximum(self.upper - self.lower, 1.0)
+        # A joint within the margin of a clipped limit sits at it (see blocked_joints).
+        self.low_edge = np.where(self.clipped, self.lower + margin, -np.inf)
+        self.high_edge = np.where(self.clipped, self.upper - margin, np.inf)
+        self.any_wraps = bool(self.wraps.any())
+        self.any_clipped = bool(self.clipped.any())
+
     @classmethod
     def of(cls, problem: Problem) -> _Joints:
         j = problem.joints
@@ -120,27 +128,26 @@ class _Joints:
 
     def project(self, x: np.ndarray, limits: np.ndarray) -> np.ndarray:
         """``x`` (B, m) wrapped or clipped into the ranges where ``limits`` (B,) says so."""
-        outside = self.wraps & ((x < self.lower) | (x > self.upper))
-        wrapped = self.lower + np.mod(x - self.lower, FULL_TURN)
-        inside = np.clip(np.where(outside, wrapped, x), self.lower, self.upper)
+        inside = x
+        if self.any_wraps:
+            outside = self.wraps & ((x < self.lower) | (x > self.upper))
+            wrapped = self.lower + np.mod(x - self.lower, FULL_TURN)
+            inside = np.where(outside, wrapped, x)
+        inside = np.clip(inside, self.lower, self.upper)
+        if limits.all():
+            return inside
         return np.where(limits[:, np.newaxis], inside, x)
 
     def blocked(self, x: np.ndarray, direction: np.ndarray, limits: np.ndarray) -> np.ndarray:
-        blocked = blocked_joints(self.lower, self.upper, self.clipped, x, direction)
-        return blocked & limits[:, np.newaxis]
+        """Joints (B, m) at a clipped limit that ``direction`` pushes past, where ``limits``."""
+        low = (x <= self.low_edge) & (direction < 0)
+        blocked = low | ((x >= self.high_edge) & (direction > 0))
+        return blocked if limits.all() else blocked & limits[:, np.newaxis]
 
 
 def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Row-wise dot products of (B, k) arrays, (B,)."""
     return (a[:, np.newaxis, :] @ b[:, :, np.newaxis])[:, 0, 0]
-
-
-def _with_damping(normal: np.ndarray, damping: np.ndarray) -> np.ndarray:
-    """``JᵀJ + λI`` for (B, m, m) and (B,)."""
-    system = normal.copy()
-    m = normal.shape[-1]
-    system.reshape(len(normal), m * m)[:, :: m + 1] += damping[:, np.newaxis]
-    return system
 
 
 def _step(
@@ -152,18 +159,20 @@ def _step(
     limits: np.ndarray | None,
 ) -> np.ndarray:
     """Solve ``(JᵀJ + λI) Δ = Jᵀe``, again without the joints it would push past a limit
-    (``limits`` (B,): where the ranges hold; None: nowhere)."""
-    system = _with_damping(normal, damping)
-    step = np.linalg.solve(system, gradient[:, :, np.newaxis])[:, :, 0]
+    (``limits`` (B,): where the ranges hold; None: nowhere). ``normal`` is overwritten."""
+    m = normal.shape[-1]
+    diagonal = normal.reshape(len(normal), m * m)[:, :: m + 1]
+    diagonal += damping[:, np.newaxis]
+    step = np.linalg.solve(normal, gradient[:, :, np.newaxis])[:, :, 0]
     if limits is not None:
         blocked = joints.blocked(x, step, limits)
         again = np.flatnonzero(blocked.any(axis=1))
         if again.size:
             # Freezing joints zeroes their Jacobian columns: JᵀJ loses their rows and
-            # columns, Jᵀe their entries.
+            # columns, Jᵀe their entries (the damping keeps the system regular).
             free = ~blocked[again]
-            frozen = normal[again] * (free[:, :, np.newaxis] & free[:, np.newaxis, :])
-            system = _with_damping(frozen, damping[again])
+            system = normal[again] * (free[:, :, np.newaxis] & free[:, np.newaxis, :])
+            system.reshape(len(again), m * m)[:, :: m + 1] += damping[again, np.newaxis] * ~free
             free_gradient = (gradient[again] * free)[:, :, np.newaxis]
             step[again] = np.linalg.solve(system, free_gradient)[:, :, 0]
     return step * joints.scale
@@ -225,43 +234,30 @@ def solve(
     mu = np.full(ids.size, MU_START)
     checkpoint = np.full(ids.size, np.inf)
     energy = problem.energy(state.error)
-    clipped = bool(joints.clipped.any())
-    m = joints.scale.size
     for iteration in range(max_iterations):
         if not ids.size:
             break
-        stop = np.zeros(ids.size, dtype=int) if race is None else race.lost(ids)
+        stop = None if race is None else race.lost(ids)
         if iteration % PROGRESS_WINDOW == 0:
-            stop[(stop == 0) & (energy > PROGRESS_FACTOR * checkpoint)] = STALLED
+            # Crawling: E fell by less than the factor since the last check.
+            stalled = np.where(energy > PROGRESS_FACTOR * checkpoint, STALLED, 0)
+            stop = stalled if stop is None else np.where(stop == 0, stalled, stop)
             checkpoint = energy
-        scaled = state.error * problem.row_scale
-        jt = state.jacobian.transpose(0, 2, 1)
-        gradient = (jt @ scaled[:, :, np.newaxis])[:, :, 0]
-        normal = jt @ state.jacobian
-        # Stationary: no allowed motion changes the error (joints pressed against a
-        # limit cannot help, so they are left out of the test). ‖J‖² sums JᵀJ's diagonal.
-        columns = normal.reshape(len(normal), m * m)[:, :: m + 1]
-        bounded = state.limits if clipped and state.limits.any() else None
-        if bounded is None:
-            size, free_gradient = _dot(columns, np.ones_like(gradient)), gradient
-        else:
-            allowed = ~joints.blocked(state.x, gradient, bounded)
-            size, free_gradient = _dot(columns, allowed.astype(float)), gradient * allowed
-        flat = _dot(free_gradient, free_gradient) <= STATIONARY_RATIO**2 * size * 2.0 * energy
-        stop[(stop == 0) & flat] = STATIONARY
-        going = stop == 0
-        if not going.all():
+        if stop is not None and stop.any():
+            going = stop == 0
             finished = ~going
             status[ids[finished]] = stop[finished]
             out_x[ids[finished]] = state.x[finished]
             out_error[ids[finished]] = state.error[finished]
             ids, mu, checkpoint, energy = ids[going], mu[going], checkpoint[going], energy[going]
             state = state.take(going)
-            gradient, normal = gradient[going], normal[going]
-            if bounded is not None:
-                bounded = state.limits
             if not ids.size:
                 break
+        scaled = state.error * problem.row_scale
+        jt = state.jacobian.transpose(0, 2, 1)
+        gradient = (jt @ scaled[:, :, np.newaxis])[:, :, 0]
+        normal = jt @ state.jacobian
+        bounded = state.limits if joints.any_clipped and state.limits.any() else None
         step = _step(normal, gradient, mu * (energy + BIAS), joints, state.x, bounded)
         trial = joints.project(state.x + step, state.limits)
         trial_error, trial_jacobian = problem.evaluate(state.positions, state.rotations, trial)
@@ -278,8 +274,8 @@ def solve(
         done[~better & (mu > MU_MAX)] = STALLED
         if race is not None:
             race.won(ids[done == CONVERGED])
-        going = done == 0
-        if not going.all():
+        if done.any():
+            going = done == 0
             finished = ~going
             status[ids[finished]] = done[finished]
             out_x[ids[finished]] = state.x[finished]

@@ -27,7 +27,7 @@ from ._lm import CONVERGED, STALLED, Run, solve
 from ._problem import Problem
 from ._reasons import fit_into_limits
 
-__all__ = ["Search", "search", "WAVE_RUNS"]
+__all__ = ["Search", "search", "nearest_first", "WAVE_RUNS"]
 
 #: A wave holds up to max(T, this) runs.
 WAVE_RUNS = 128
@@ -137,10 +137,15 @@ def search(
     # (``_closest``) takes it from its first start to the closest configuration.
     length = np.where(proved, 0, starts * (2 if retries else 1))
     done = np.zeros(count, dtype=int)  # runs read so far, per target
+    # Each target's random starts, nearest first (ranked once its first start failed).
+    ranking = np.zeros((count, len(draws)), dtype=int)
     while True:
         open_ = np.flatnonzero((state.status != CONVERGED) & (done < length))
         if not open_.size:
             return state
+        fresh = open_[done[open_] == 1]
+        if fresh.size and len(draws):
+            ranking[fresh] = nearest_first(problem, fresh, draws)
         # The first wave is every target's first start alone: from a q0 near the answer,
         # as when following a moving target, that is all it takes.
         width = max(1, max(count, WAVE_RUNS) // open_.size) if done.any() else 1
@@ -151,7 +156,7 @@ def search(
         attempt, free = item % starts, item >= starts
         start = first[target]
         later = attempt > 0
-        start[later] = draws[attempt[later] - 1]
+        start[later] = draws[ranking[target[later], attempt[later] - 1]]
         # A run without the ranges decides nothing by converging: its twin may not fit.
         run = solve(
             problem, target, start, max_iterations, limits & ~free, order=item, decisive=~free
@@ -166,3 +171,18 @@ def search(
             else:
                 state.read_limited(target[rows], part)
         done[open_] += ahead
+
+
+def nearest_first(problem: Problem, index: np.ndarray, draws: np.ndarray) -> np.ndarray:
+    """The random starts ranked for each target ``index`` (k,), nearest first: by the
+    error (in the solver's units) their end-effector poses leave, ties in draw order.
+
+    Depends on the target and the draws only, so a target ranks them the same alone or
+    among others. Returns (k, S − 1) indices into ``draws``.
+    """
+    count = len(draws)
+    pose = problem.robot.end_effector_pose(problem.project(draws, False))
+    targets = np.repeat(index, count)
+    error = problem.errors_from_pose(targets, np.tile(pose, (len(index), 1, 1)))
+    energy = problem.energy(error).reshape(len(index), count)
+    return np.argsort(energy, axis=1, kind="stable")
