@@ -40,6 +40,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ._chain import Workspace
 from ._problem import FULL_TURN, Problem
 
 __all__ = [
@@ -234,6 +235,8 @@ def solve(
     mu = np.full(ids.size, MU_START)
     checkpoint = np.full(ids.size, np.inf)
     energy = problem.energy(state.error)
+    m = len(problem.joints)
+    workspace = Workspace()
     for iteration in range(max_iterations):
         if not ids.size:
             break
@@ -256,18 +259,22 @@ def solve(
         scaled = state.error * problem.row_scale
         jt = state.jacobian.transpose(0, 2, 1)
         gradient = (jt @ scaled[:, :, np.newaxis])[:, :, 0]
-        normal = jt @ state.jacobian
+        # Into a buffer kept across steps: arrays this size (above glibc's mmap threshold)
+        # would otherwise be fresh pages, page-faulted in at every step.
+        normal = np.matmul(jt, state.jacobian, out=workspace.get("normal", (len(ids), m, m)))
         bounded = state.limits if joints.any_clipped and state.limits.any() else None
         step = _step(normal, gradient, mu * (energy + BIAS), joints, state.x, bounded)
         trial = joints.project(state.x + step, state.limits)
-        trial_error, trial_jacobian = problem.evaluate(state.positions, state.rotations, trial)
+        trial_error, trial_jacobian = problem.evaluate(
+            state.positions, state.rotations, trial, workspace=workspace
+        )
         assert trial_jacobian is not None
         trial_energy = problem.energy(trial_error)
         better = trial_energy < energy
         iterations[ids] += 1
-        state.x = np.where(better[:, np.newaxis], trial, state.x)
-        state.error = np.where(better[:, np.newaxis], trial_error, state.error)
-        state.jacobian = np.where(better[:, np.newaxis, np.newaxis], trial_jacobian, state.jacobian)
+        np.copyto(state.x, trial, where=better[:, np.newaxis])
+        np.copyto(state.error, trial_error, where=better[:, np.newaxis])
+        np.copyto(state.jacobian, trial_jacobian, where=better[:, np.newaxis, np.newaxis])
         energy = np.where(better, trial_energy, energy)
         mu = np.where(better, np.maximum(mu * MU_DOWN, MU_MIN), mu * MU_UP)
         done = np.where(better & problem.converged(state.error), CONVERGED, 0)
