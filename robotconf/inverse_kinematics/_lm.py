@@ -18,11 +18,12 @@ wrapped, when the range spans a full turn). A joint already at a limit whose ste
 push it further is frozen for that step and the step is solved again without it, so the
 other joints still make progress along the limit.
 
-A run stops when it meets both tolerances (**converged**), when its error is orthogonal
-to everything the joints can do (**stationary**: ``‖Jᵀe‖ ≤ 10⁻⁹ ‖J‖ ‖e‖``, a closest
-point or a singularity), when ``μ`` passes ``10⁸`` without an accepted step or ``E`` falls
-by less than 1 % over 10 steps (**stalled**: nothing lowers the error any more, e.g.
-crawling along a limit, or at rounding level), or after ``max_iterations`` steps.
+A run stops when it meets both tolerances (**converged**), when ``μ`` passes ``10⁸``
+without an accepted step or ``E`` has not halved over 5 steps (**stalled**: crawling
+along a limit, at a saddle where no step helps, at rounding level, or on its way to a
+solution outside the ranges — another start is cheaper than following it), or after
+``max_iterations`` steps. (:data:`STATIONARY` is the second-order descent's word for a
+local minimum, :mod:`robotconf.inverse_kinematics._closest`.)
 Runs of one target may be ordered (its starts, tried in turn): a run is dropped
 (**superseded**) as soon as a run of the same target ordered before it has converged,
 since only the first converged run counts.
@@ -63,11 +64,9 @@ BIAS = 1e-4
 #: Limits and factors of the trust multiplier μ.
 MU_START, MU_MIN, MU_MAX = 1.0, 1e-6, 1e8
 MU_DOWN, MU_UP = 0.25, 4.0
-#: A run whose ``E`` fell by less than 1 % over this many steps is crawling (typically
-#: along a joint limit) and stops as stalled.
+#: A run whose ``E`` has not fallen below this factor of itself over this many steps is
+#: crawling and stops as stalled: converging runs halve it many times over in that time.
 PROGRESS_WINDOW, PROGRESS_FACTOR = 5, 0.5
-#: ``‖Jᵀe‖ / (‖J‖ ‖e‖)`` below this: the error is orthogonal to every joint motion.
-STATIONARY_RATIO = 1e-9
 
 
 @dataclass

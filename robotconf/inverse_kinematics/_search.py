@@ -1,8 +1,9 @@
 """The starts of :func:`~robotconf.ik`, tried in turn per target but run in waves.
 
 Each target has a sequence of **runs**: one within the joint ranges from each start
-(``q0``, then the random ones), and, on a robot with clipped joints, the same starts once
-more without the ranges (a solution then turned by whole turns to fit them). The answer
+(``q0``, then the random ones, nearest first: :func:`nearest_first`), and, on a robot
+with clipped joints, the same starts once more without the ranges (a solution then
+turned by whole turns to fit them). The answer
 is the first run in this order that converges, or the closest of all when none does;
 ``iterations`` adds up the steps of every run up to it.
 
