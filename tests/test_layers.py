@@ -31,7 +31,7 @@ PACKAGE = Path(__file__).resolve().parents[1] / "robotconf"
 LAYERS: tuple[tuple[str, ...], ...] = (
     ("_base",),
     ("kinematics", "signals"),
-    ("motion", "inverse_kinematics"),
+    ("motion", "inverse_kinematics", "calibration"),
     ("teaching", "presets", "programs"),
     ("cell",),
     ("io",),

@@ -68,7 +68,10 @@ def _move(value: Any, path: str) -> Any:
     names = [f.name for f in fields(cls)]
     check_json_object(value, path, {"type": True, **{name: False for name in names}})
     given = {name: _value(value[name], f"{path}.{name}") for name in names if name in value}
-    return cls(**given)
+    try:
+        return cls(**given)
+    except InvalidInputError as error:
+        raise error.within(path) from None
 
 
 def program_from_dict(value: Any, robot: Robot, path: str = "program") -> Program:

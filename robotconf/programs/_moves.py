@@ -1,8 +1,11 @@
 """The moves of a robot program: PTP, LIN, CIRC and Wait (docs/programs.md).
 
-A move records what was asked; :class:`~robotconf.programs.Program` checks it against
-the robot (so an error names ``moves[i].field``) and keeps the checked copy, whose
-numbers are plain floats and tuples. ``to_dict`` gives the JSON form of a move.
+A move records what was asked. Making one checks that its numbers are numbers within the
+program bounds (finite, ``|x| ≤ 1e150``, rates from 1e-150 to 1e150, see
+:mod:`robotconf.programs._inputs`), so an error names the field at once;
+:class:`~robotconf.programs.Program` checks it again against the robot (so an error names
+``moves[i].field``) and keeps the checked copy, whose numbers are plain floats and tuples.
+``to_dict`` gives the JSON form of a move.
 """
 
 from __future__ import annotations
@@ -15,7 +18,7 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_configuration, one_line
-from ._inputs import choice, point, pose, positive, seconds
+from ._inputs import check_move_numbers, choice, point, pose, positive, seconds
 from ._profiles import PROFILES
 
 __all__ = ["Move", "PTP", "LIN", "CIRC", "Wait", "ORIENTATIONS", "MOVE_TYPES"]
@@ -53,6 +56,9 @@ class Move:
     """
 
     kind: ClassVar[str] = ""
+
+    def __post_init__(self) -> None:
+        check_move_numbers(self)
 
     def _key(self) -> tuple[Any, ...]:
         return tuple(_frozen(getattr(self, f.name)) for f in fields(self))

@@ -13,6 +13,7 @@ from .._validation import check_configuration, check_finite_number, one_line
 from ..kinematics import Robot
 from ..motion import analytic_dva
 from ._chain import Chain, make_chain
+from ._inputs import check_move_numbers
 from ._limits import LIMIT_NAMES, Limits, check_given, resolve_limits
 from ._motion import ProgramMotion
 from ._moves import Move
@@ -49,6 +50,7 @@ def _check_moves(moves: Any, n: int, names: Sequence[str]) -> tuple[Move, ...]:
                 problem="not a move:",
             )
         try:
+            check_move_numbers(move)
             checked.append(move.checked(n, names))
         except InvalidInputError as error:
             raise error.within(f"moves[{i}]") from None
