@@ -187,7 +187,7 @@ def _path(chain: Chain, move: LIN | CIRC, q0: np.ndarray) -> tuple[CartesianPath
         if path.length <= ZERO_PATH * chain.length and path.angle <= ZERO_PATH:
             raise InvalidInputError(
                 field,
-                one_line(goal_array),
+                tuple(float(v) for v in p1),  # the point, also for a pose target
                 "a target away from the start (for no motion use Wait)",
                 problem="the LIN goes nowhere: the end effector is already at",
             )

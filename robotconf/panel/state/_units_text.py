@@ -21,7 +21,10 @@ _NUMBER = r"[-+−]?(?:\d+\.?\d*|\.\d+)(?:e[-+]?\d+)?"
 _ANGLE = re.compile(
     rf"(?:\[(?P<a>{_NUMBER}), (?P<b>{_NUMBER})\]|(?P<one>{_NUMBER})) rad(?P<rate>/s²|/s)?(?![\w²])"
 )
-_LENGTH_WORD = re.compile(r"(?<=\d) length(?P<rate>/s²|/s)?\b")
+#: ``length`` as a unit: after a number (``0.25 length/s``), or a rate (``(length/s)``).
+_LENGTH_WORD = re.compile(
+    r"(?:(?<=\d )|(?<=\())length(?P<rate>/s²|/s)?(?![\w²])|\blength(?P<per>/s²|/s)(?![\w²])"
+)
 
 
 def _degrees(text: str) -> str:
@@ -38,6 +41,13 @@ def _angle(match: re.Match[str]) -> str:
     return f"{shown} deg{rate}"
 
 
+def _length(name: str):  # type: ignore[no-untyped-def]
+    def named(match: re.Match[str]) -> str:
+        return name + (match.group("rate") or match.group("per") or "")
+
+    return named
+
+
 def in_units(text: str, units: Units) -> str:
     """``text`` with its radians in degrees (in degree mode) and ``length`` named.
 
@@ -48,11 +58,13 @@ def in_units(text: str, units: Units) -> str:
     'q2 leaves its range [-180, 180] deg (by up to 20 deg)'
     >>> in_units("limit 1 rad/s; d moves 0.25 length/s", Units("mm", degrees=True))
     'limit 57.3 deg/s; d moves 0.25 mm/s'
+    >>> in_units("allowed: a path speed (length/s); its length is 3", Units("mm"))
+    'allowed: a path speed (mm/s); its length is 3'
     >>> in_units("limit 1 rad/s", Units("mm", degrees=False))
     'limit 1 rad/s'
     """
     if units.degrees:
         text = _ANGLE.sub(_angle, text)
     if units.length != "units":
-        text = _LENGTH_WORD.sub(lambda m: f" {units.length}{m.group('rate') or ''}", text)
+        text = _LENGTH_WORD.sub(_length(units.length), text)
     return text
