@@ -49,6 +49,7 @@ from ._result import IKResult, single_or_batch
 from ._search import WAVE_RUNS, Search, search
 from ._structure import cached_rank, rank, warn_if_overconstrained
 from ._targets import check_mask, check_mode, check_options, check_start, check_targets
+from .batch import closed_form_starts
 
 __all__ = ["ik", "ik_bytes"]
 
@@ -195,7 +196,15 @@ def ik(
     draws = problem.lower + (problem.upper - problem.lower) * rng.random(
         (options.seeds - 1, robot.n)
     )
-    found = search(problem, first, draws, proved, options.max_iterations, limits)
+    found = search(
+        problem,
+        first,
+        draws,
+        proved,
+        options.max_iterations,
+        limits,
+        own=lambda index: closed_form_starts(problem, index, first[index], limits, len(draws)),
+    )
     _verify(problem, found)
     minimum = _approach(problem, found, proved, beyond, draws, options.max_iterations, limits)
     _verify(problem, found)
