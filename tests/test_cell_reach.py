@@ -145,9 +145,7 @@ def test_place_agrees_with_reach_from_each_base_for_a_six_joint_arm():
         assert plan.feasible[b] == alone.all_reachable
         if alone.all_reachable:
             assert plan.margin[b] == pytest.approx(np.min(alone.clearance), abs=1e-12)
-            assert plan.manipulability[b] == pytest.approx(
-                np.min(alone.manipulability), rel=1e-12
-            )
+            assert plan.manipulability[b] == pytest.approx(np.min(alone.manipulability), rel=1e-12)
 
 
 def test_mirror_branches_of_equal_manipulability_give_the_first():

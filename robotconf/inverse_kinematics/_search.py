@@ -1,10 +1,10 @@
 """The starts of :func:`~robotconf.ik`, tried in turn per target but run in waves.
 
 Each target has a sequence of **runs**: one within the joint ranges from each start
-(``q0``, then the target's own starts if the caller has some — the closed-form solutions
-of a recognized arm — then the random ones, nearest first: :func:`nearest_first`), and, on a robot
-with clipped joints, the same starts once more without the ranges (a solution then
-turned by whole turns to fit them). The answer
+(``q0``, then the target's own starts if the caller gives some — the closed-form
+solutions of a recognized arm — then the random ones, nearest first:
+:func:`nearest_first`), and, on a robot with clipped joints, the same starts once more
+without the ranges (a solution then turned by whole turns to fit them). The answer
 is the first run in this order that converges, or the closest of all when none does;
 ``iterations`` adds up the steps of every run up to it.
 
