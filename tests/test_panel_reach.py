@@ -21,7 +21,8 @@ from robotconf.kinematics import matrix_from_rpy as rotation_from_rpy
 from robotconf.panel import Configurator
 from robotconf.panel._reach_pose import pose_from_xyz_rpy, xyz_rpy_from_pose
 from robotconf.scene import RecordingChannel, Scene
-from robotconf.scene._ghosts import GHOSTS, TARGET, TARGET_COLORS
+from robotconf.scene._ghosts import GHOSTS
+from robotconf.scene._target import TARGET, TARGET_COLORS
 
 REACH_TAB = 2
 PUMA_Q = np.array([0.3, 0.2, -0.4, 0.5, 0.6, 0.7])
