@@ -104,9 +104,9 @@ def test_run_shows_the_motion_in_the_motion_tab_and_animates_it_with_the_trace()
     results = panel.motion_section.results
     assert results.motion is motion and "position [mm]" in results.table.value
     scene = panel.scene
-    assert scene.animation is not None
-    assert scene.animation.duration == pytest.approx(motion.program.duration, rel=1e-12)
-    assert scene.trace_shown and scene.controls.trace.value
+    assert scene.playback_state.loaded
+    assert scene.playback_state.duration == pytest.approx(motion.program.duration, rel=1e-12)
+    assert scene.trace_shown
     assert [c for c in scene.channel.commands("set_object") if c["path"] == TRACE]
     panel.program_tab.motion_button.click()
     assert panel.results.selected_index == MOTION_TAB

@@ -26,7 +26,7 @@ from ..kinematics import (
     joint_axes,
 )
 from ._labels import label_digits
-from ._placement import Placement, align_y, compose, segment_placement
+from ._placement import Placement, align_y, compose
 
 __all__ = [
     "DrawnItem",
@@ -199,6 +199,9 @@ class RobotDrawing:
         self._prismatic_items = np.array(
             [index[f"modules/{i}/joint"] for i in self._prismatic], dtype=int
         )
+        #: The items along a direction, in _arrange's order: links, drums, bars.
+        self._along = np.concatenate([self._links, self._revolute_items, self._prismatic_items])
+        self._identity = np.broadcast_to(np.eye(3), (1, len(items), 3, 3))
 
     def place(self, snapshot: RobotSnapshot) -> np.ndarray:
         """The 4×4 transform of every item for one snapshot, shape (m, 4, 4).
@@ -237,44 +240,56 @@ class RobotDrawing:
         self, poses: np.ndarray, ee: np.ndarray, point: np.ndarray, direction: np.ndarray
     ) -> Placement:
         """Items placed from frame poses (T, n, 4, 4), the EE (T, 3) and the joint axes'
-        points and directions (T, n, 3)."""
+        points and directions (T, n, 3): a handful of array operations, whatever n."""
         samples, m = poses.shape[0], len(self.items)
         origins = poses[:, :, :3, 3]
         ends = np.concatenate([origins, ee[:, None]], axis=1)  # the labelled points
         starts = np.concatenate([np.zeros((samples, 1, 3)), origins], axis=1)
         position = np.zeros((samples, m, 3))
-        rotation = np.zeros((samples, m, 3, 3))
-        rotation[..., [0, 1, 2], [0, 1, 2]] = 1.0
+        rotation = np.repeat(self._identity, samples, axis=0)
         scale = np.ones((samples, m, 3))
-        tiny = 1e-9 * self.size
-        links = segment_placement(starts, ends, tiny)
-        position[:, self._links] = links.position
-        rotation[:, self._links] = links.rotation
-        scale[:, self._links] = links.scale
         position[:, self._spheres] = ends
         position[:, self._labels] = ends  # the page lifts each text above its point
         position[:, self._frames] = origins
         rotation[:, self._frames] = poses[:, :, :3, :3]
-        if len(self._revolute):
-            # On the joint's own axis, as the core defines it (rc.joint_axes): a standard
-            # DH joint i turns about z_{i-1} through frame i-1's origin, which is |a_i|
-            # away from frame i's origin; a module or modified DH joint about its own
-            # frame's axis. A short drum centred where the joint sits.
-            k = self._revolute_items
-            position[:, k] = point[:, self._revolute]
-            rotation[:, k] = align_y(direction[:, self._revolute])
-            scale[:, k, 1] = 3.0 * SPHERE_RADIUS * self.size
-        if len(self._prismatic):
-            # A bar along the slide, from where it starts to where the slid frame's origin
-            # projects on it (a standard DH row adds a_i across, off the axis).
-            i, k = self._prismatic, self._prismatic_items
-            start, along = point[:, i], direction[:, i]
-            travel = np.einsum("...k,...k->...", origins[:, i] - start, along)
-            bar = segment_placement(start, start + travel[..., None] * along, tiny)
-            position[:, k] = bar.position
-            rotation[:, k] = align_y(along)
-            scale[:, k] = bar.scale
-            scale[:, k, 1] = np.maximum(bar.scale[..., 1], 2.0 * SPHERE_RADIUS * self.size)
+        # Items along a direction, all turned by one align_y: the links (from the previous
+        # point to the next); the revolute joints' drums, on the joint's own axis as the
+        # core defines it (rc.joint_axes: a standard DH joint i turns about z_{i-1}
+        # through frame i-1's origin, |a_i| away from frame i's; a module or modified DH
+        # joint about its own frame's axis), centred where the joint sits; the prismatic
+        # joints' bars, along the slide from where it starts to where the slid frame's
+        # origin projects on it (a standard DH row adds a_i across, off the axis).
+        rev, pri = self._revolute, self._prismatic
+        links = ends - starts
+        start, along = point[:, pri], direction[:, pri]
+        travel = np.einsum("...k,...k->...", origins[:, pri] - start, along)
+        turned = align_y(np.concatenate([links, direction[:, rev], along], axis=1))
+        link_length = np.sqrt(np.einsum("...k,...k->...", links, links))
+        tiny = 1e-9 * self.size
+        # A zero-length link or bar is drawn as nothing: scaled to `tiny` across.
+        width = np.concatenate(
+            [
+                np.where(link_length > tiny, 1.0, tiny),
+                np.ones((samples, len(rev))),
+                np.where(np.abs(travel) > tiny, 1.0, tiny),
+            ],
+            axis=1,
+        )
+        length = np.concatenate(
+            [
+                np.where(link_length > tiny, link_length, tiny),
+                np.full((samples, len(rev)), 3.0 * SPHERE_RADIUS * self.size),
+                np.maximum(np.abs(travel), 2.0 * SPHERE_RADIUS * self.size),
+            ],
+            axis=1,
+        )
+        k = self._along
+        position[:, k] = np.concatenate(
+            [(starts + ends) / 2.0, point[:, rev], start + 0.5 * travel[..., None] * along],
+            axis=1,
+        )
+        rotation[:, k] = turned
+        scale[:, k] = np.stack([width, length, width], axis=-1)
         return Placement(position, rotation, scale)
 
     def labels(self, snapshot: RobotSnapshot, digits: int | None = None) -> list[str]:

@@ -37,12 +37,18 @@ def label_digits(length: float) -> int:
 
 
 def merge_coincident(
-    names: list[str], points: np.ndarray, digits: int, positions: bool
+    names: list[str],
+    points: np.ndarray,
+    digits: int,
+    positions: bool,
+    known: dict[tuple[str, tuple[float, ...]], str] | None = None,
 ) -> list[str]:
     """One label per group of points equal at ``digits`` decimals; the others empty.
 
     The group's first label names every point of it, ``"M4, M5, M6 (0.45, -0.15, 0.43)"``
-    (or ``"M4, M5, M6"`` without ``positions``); an empty text draws nothing.
+    (or ``"M4, M5, M6"`` without ``positions``); an empty text draws nothing. ``known``
+    keeps texts already written (by name and rounded position, for one ``digits``): a
+    slider step on the last joint writes only the labels of the points that moved.
 
     Examples
     --------
@@ -52,15 +58,27 @@ def merge_coincident(
     """
     from ..kinematics import format_point
 
-    keys = [tuple(round(float(v), digits) + 0.0 for v in p) for p in points]
+    rows = np.asarray(points, dtype=float).tolist()
+    # The rounding format_point shows: equal keys print equal numbers.
+    keys = [tuple(round(v, digits) + 0.0 for v in row) for row in rows]
     groups: dict[tuple[float, ...], list[int]] = {}
     for k, key in enumerate(keys):
         groups.setdefault(key, []).append(k)
     texts = [""] * len(names)
-    for members in groups.values():
+    for key, members in groups.items():
         name = ", ".join(names[k] for k in members)
         first = members[0]
-        texts[first] = format_point(name, points[first], digits) if positions else name
+        if not positions:
+            texts[first] = name
+        elif known is None:
+            texts[first] = format_point(name, rows[first], digits)
+        else:
+            text = known.get((name, key))
+            if text is None:
+                if len(known) > 4096:  # a long drag: forget the oldest ones
+                    known.clear()
+                text = known[(name, key)] = format_point(name, rows[first], digits)
+            texts[first] = text
     return texts
 
 

@@ -76,6 +76,7 @@ class RobotLayer:
         self._length = 0.0  # the drawn robot's characteristic length
         #: Decimals of the position labels: three significant digits of the robot's size.
         self.digits = 1
+        self._texts_known: dict[tuple[str, tuple[float, ...]], str] = {}  # for these digits
 
     def show(self, snapshot: RobotSnapshot) -> bool:
         """Move the robot to ``snapshot`` (rebuilding it if needed): one message with what
@@ -96,7 +97,10 @@ class RobotLayer:
                 rebuilt = True
             else:
                 drawing.robot = robot  # the same objects; lengths may differ a little
-            self.digits = label_digits(length)
+            digits = label_digits(length)
+            if digits != self.digits:
+                self._texts_known.clear()
+            self.digits = digits
         self.snapshot = snapshot
         matrices = drawing.place(snapshot)
         changed = self._shown.transforms(matrices)
@@ -174,7 +178,7 @@ class RobotLayer:
             # that part during the motion, would be wrong.
             return list(names)
         points = np.vstack([self.snapshot.frame_origins, self.snapshot.end_effector])
-        return merge_coincident(names, points, self.digits, mode == "positions")
+        return merge_coincident(names, points, self.digits, mode == "positions", self._texts_known)
 
     def _label_ops(self) -> tuple[list[Op], list[Op]]:
         """The labels that changed (for live views) and all labels (for the log)."""
