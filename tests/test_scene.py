@@ -248,8 +248,10 @@ def test_animation_tracks_follow_the_motion(scene: Scene, paper_robot: rc.Robot)
     command = scene.channel.commands("set_animation")[-1]
     by_path = {a["path"]: a["clip"] for a in command["animations"]}
     tracks = {t["name"]: t for t in by_path[f"{ROBOT_PATH}/ee/sphere"]["tracks"]}
-    # Motion seconds: the page's player plays them at speed 2.
-    assert tracks[".position"]["times"] == [0.0, 0.5, 1.0, 1.5, 2.0]
+    # Motion seconds (float32 bytes, as the viewer decodes them into a Float32Array): the
+    # page's player plays them at speed 2.
+    times = np.frombuffer(tracks[".position"]["times"].data, dtype=np.float32)
+    assert times.tolist() == [0.0, 0.5, 1.0, 1.5, 2.0]
     assert command["options"] == {"play": False, "repetitions": 1}  # the page plays it
     (load,) = [op.content for op in scene.channel.ops if op.content["op"] == "playback"]
     assert (load["action"], load["speed"], load["duration"], load["playing"]) == (
@@ -258,8 +260,8 @@ def test_animation_tracks_follow_the_motion(scene: Scene, paper_robot: rc.Robot)
         2.0,
         True,
     )
-    positions = np.array(tracks[".position"]["values"]).reshape(-1, 3)
-    np.testing.assert_allclose(positions, motion.position[:, -1], atol=1e-5)
+    positions = np.frombuffer(tracks[".position"]["values"].data, dtype=np.float32)
+    np.testing.assert_allclose(positions.reshape(-1, 3), motion.position[:, -1], rtol=1e-6)
     labels = [op.content for op in scene.channel.ops if op.content["op"] == "labels"]
     assert labels[-1]["texts"] == ["M1", "M2", "M3", "EE"]
     with pytest.raises(rc.InvalidInputError, match="speed: must be positive: 0.0"):

@@ -31,6 +31,7 @@ __all__ = [
     "RecordingChannel",
     "command_op",
     "set_object_op",
+    "meshcat_op",
     "transforms_op",
     "labels_op",
     "fit_op",
@@ -67,9 +68,19 @@ def set_object_op(path: str, obj: dict[str, Any]) -> Op:
     Typed arrays (a triad's vertices, a point cloud) are msgpack extension types, which
     only the packed form carries; plain shapes stay readable JSON.
     """
-    command = {"type": "set_object", "path": path, "object": obj}
-    if _has_ext(obj):
-        return Op({"op": "packed", "type": "set_object", "path": path}, (pack_command(command),))
+    return meshcat_op({"type": "set_object", "path": path, "object": obj})
+
+
+def meshcat_op(command: dict[str, Any]) -> Op:
+    """A meshcat command as JSON, or msgpack-packed when it holds typed arrays (an
+    animation's keyframes, a point cloud).
+
+    >>> meshcat_op({"type": "delete", "path": "/a"}).content["op"]
+    'command'
+    """
+    if _has_ext(command):
+        content = {"op": "packed", "type": command["type"], "path": command.get("path", "")}
+        return Op(content, (pack_command(command),))
     return command_op(command)
 
 

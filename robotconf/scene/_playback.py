@@ -19,15 +19,16 @@ from dataclasses import dataclass
 from time import monotonic
 from typing import Any
 
+import msgpack
 import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import check_finite_number, check_flag, check_joint_values
-from ._commands import Op, Outbox, command_op, playback_op, set_object_op
+from ._commands import Op, Outbox, command_op, meshcat_op, playback_op, set_object_op
 from ._drawing import COLORS, RobotDrawing
 from ._placement import quaternions
 from ._robot_layer import ROBOT
-from ._three import polyline
+from ._three import float32_array, polyline
 
 __all__ = [
     "Playback",
@@ -134,7 +135,7 @@ class Playback:
         self._loaded, self._duration, self._path = True, duration, path
         self._speed = speed
         self._set(0.0, play)
-        ops = [command_op(command)]
+        ops = [meshcat_op(command)]
         if self.trace:
             ops.append(self.trace_op())
         # The keyframes are the state a new view replays; where the player stands is
@@ -291,7 +292,7 @@ def animation_command(drawing: RobotDrawing, motion: Any, *, root: str) -> dict[
         )
     t = np.asarray(t, dtype=float)
     keep = _keyframes(len(t))
-    times = (t[keep] - t[0]).tolist()
+    times = float32_array(t[keep] - t[0])
     placement = drawing.placements(q[keep])
     quats = quaternions(placement.rotation)
     animations = []
@@ -332,10 +333,6 @@ def _keyframes(samples: int) -> np.ndarray:
     return np.unique(np.linspace(0, samples - 1, min(samples, MAX_FRAMES)).round().astype(int))
 
 
-def _track(name: str, kind: str, times: list[float], values: np.ndarray) -> dict[str, Any]:
-    return {
-        "name": name,
-        "type": kind,
-        "times": times,
-        "values": np.round(values, 7).ravel().tolist(),
-    }
+def _track(name: str, kind: str, times: msgpack.ExtType, values: np.ndarray) -> dict[str, Any]:
+    # float32, as WebGL draws them anyway: an animation travels as bytes, not as text.
+    return {"name": name, "type": kind, "times": times, "values": float32_array(values)}

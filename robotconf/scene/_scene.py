@@ -487,7 +487,8 @@ class Scene:
 
 def _is_animation(op: Op) -> bool:
     content = op.content
-    return content["op"] == "command" and content["command"]["type"] == "set_animation"
+    kind = content["command"]["type"] if content["op"] == "command" else content.get("type")
+    return kind == "set_animation"
 
 
 def _check_robot(robot: Any) -> None:

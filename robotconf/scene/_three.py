@@ -22,6 +22,7 @@ import numpy as np
 
 __all__ = [
     "FLOAT32_ARRAY",
+    "float32_array",
     "float32_attribute",
     "sphere",
     "cylinder",
@@ -59,6 +60,16 @@ def _uuid() -> str:
     return str(uuid.uuid4())
 
 
+def float32_array(values: np.ndarray) -> msgpack.ExtType:
+    """``values`` flattened to float32, as the msgpack extension the viewer decodes into a
+    JavaScript ``Float32Array``.
+
+    >>> len(float32_array(np.zeros((2, 3))).data)
+    24
+    """
+    return msgpack.ExtType(FLOAT32_ARRAY, np.ascontiguousarray(values, dtype=np.float32).tobytes())
+
+
 def float32_attribute(values: np.ndarray) -> dict[str, Any]:
     """A buffer attribute: one row of ``values`` (N, k) per vertex, packed as float32.
 
@@ -70,7 +81,7 @@ def float32_attribute(values: np.ndarray) -> dict[str, Any]:
     return {
         "itemSize": int(rows.shape[1]),
         "type": "Float32Array",
-        "array": msgpack.ExtType(FLOAT32_ARRAY, rows.tobytes()),
+        "array": float32_array(rows),
         "normalized": False,
     }
 

@@ -105,7 +105,7 @@ ANIMATION = [
     "import robotconf as rc\nrobot = rc.preset('paper')\nscene = rc.view(robot, height=360)\n"
     "requests, reports = [], []\nscene.on_request = requests.append\n"
     "scene.on_playback = reports.append",
-    "motion = rc.simulate(robot, {'q1': rc.signals.Sine(amplitude=1.2, frequency=0.5)},"
+    "motion = rc.simulate(robot, {'q1': rc.signals.Sine(amplitude=1.2, frequency=0.25)},"
     " t_end=3.0, dt=0.01)\nscene.animate(motion)",
     "state = scene.playback_state\n"
     "print('state', state.playing, round(state.time, 3), state.duration)\n"
@@ -134,6 +134,9 @@ def test_an_animation_plays_to_its_end_and_a_drag_seeks(lab: Lab, page) -> None:
         page.wait_for_timeout(250)
     assert times[-1] == 3.0, times
     assert len(set(times)) >= 4 and times == sorted(times), times
+    canvas = page.locator(f"{NOTEBOOK} [data-robotconf-scene] canvas").first
+    count, at_end = red_centroid(pixels(canvas))  # q1 = 1.2 sin(2π · 0.25 · 3) = -1.2
+    assert count >= SOLID_RED_PIXELS
     slider = bar.locator(".robotconf-scene-time")
     assert float(slider.input_value()) == 3.0
     assert bar.locator(".robotconf-scene-play").get_attribute("aria-label") == "play"
@@ -157,6 +160,9 @@ def test_an_animation_plays_to_its_end_and_a_drag_seeks(lab: Lab, page) -> None:
     page.wait_for_timeout(500)
     dragged = _clock(bar)
     assert 0.5 < dragged < 1.4, dragged
+    # The motion's frame at that time: q1 near +1.2, the end effector far from the end's.
+    count, at_drag = red_centroid(pixels(canvas))
+    assert count >= SOLID_RED_PIXELS and np.linalg.norm(at_drag - at_end) > 30
     run_cell(page, 2)
     wait_idle(page)
     out = _output(page, 2)
