@@ -35,6 +35,10 @@ RUNTIME_FILES = (
     "robotconf/scene/js/glue.js",
     "robotconf/scene/js/loader.js",
     "robotconf/scene/js/widget.js",
+    "robotconf/scene/js/labels.js",
+    "robotconf/scene/js/player.js",
+    "robotconf/scene/js/bar.js",
+    "robotconf/scene/js/mount.js",
 )
 
 #: Run in the fresh venv, from a folder outside the repository: argv = venv, html path.
