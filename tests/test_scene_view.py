@@ -156,3 +156,14 @@ def test_labels_off_hides_the_taught_points_labels_too(scene: Scene) -> None:
     scene.show_taught_points([[30.0, 0.0, 0.0]])
     visible = [op.content for op in scene.channel.ops if op.content["op"] == "visible"][-1]
     assert visible == {"op": "visible", "paths": [f"{TAUGHT}/0/label"], "value": False}
+
+
+def test_fit_takes_in_a_loaded_motion_but_animate_keeps_the_view(scene: Scene) -> None:
+    motion = rc.simulate(scene.robot, {"q1": rc.signals.Sine(amplitude=2.5)}, t_end=2, dt=0.01)
+    fits = scene.channel.kinds().count("fit")
+    scene.animate(motion)
+    assert scene.channel.kinds().count("fit") == fits  # the student's view stays
+    swept = motion.position.reshape(-1, 3)
+    assert not _holds(scene, swept)
+    scene.fit_view()
+    assert _holds(scene, swept[:: max(1, len(swept) // 2000)])

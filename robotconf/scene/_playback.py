@@ -107,7 +107,8 @@ class Playback:
         self.trace = False
         self._id = 0  # which animation: a report of an older one is stale
         self._duration = 0.0
-        self._path: Any = None  # the EE at the keyframes, for the trace
+        # Every labelled point (frames, then the EE) at the keyframes: the trace, the fit.
+        self._points = np.zeros((0, 1, 3))
         self._loaded = False
         self._playing = False
         self._time = 0.0  # motion seconds, at monotonic() == self._since
@@ -130,9 +131,9 @@ class Playback:
         command = animation_command(drawing, motion, root=ROBOT)
         speed = _check_speed(speed)
         play = check_flag(play, "play")
-        duration, path = animation_state(motion)
+        duration, points = animation_state(motion)
         self._id += 1
-        self._loaded, self._duration, self._path = True, duration, path
+        self._loaded, self._duration, self._points = True, duration, points
         self._speed = speed
         self._set(0.0, play)
         ops = [meshcat_op(command)]
@@ -246,7 +247,15 @@ class Playback:
 
     def trace_op(self) -> Op:
         """The end-effector's path of the loaded motion, as one line."""
-        return set_object_op(TRACE, polyline(self._path, COLORS["end_effector"]))
+        return set_object_op(TRACE, polyline(self._points[:, -1], COLORS["end_effector"]))
+
+    def extent(self) -> np.ndarray:
+        """Where the loaded motion takes the frames and the end effector (k, 3), for the
+        fit (at most about 200 keyframes of it)."""
+        if not self._loaded:
+            return np.zeros((0, 3))
+        step = max(1, len(self._points) // 200)
+        return np.vstack([self._points[::step], self._points[-1:]]).reshape(-1, 3)
 
 
 def _check_speed(speed: Any) -> float:
@@ -313,20 +322,21 @@ def animation_command(drawing: RobotDrawing, motion: Any, *, root: str) -> dict[
 
 
 def animation_state(motion: Any) -> tuple[float, np.ndarray]:
-    """The length of ``motion`` (s) and its end-effector at the keyframes (K, 3), for the
-    trace (``motion`` checked by :func:`animation_command` first).
+    """The length of ``motion`` (s) and every labelled point (the frames, then the end
+    effector) at the keyframes, shape (K, n + 1, 3), for the trace and the fit
+    (``motion`` checked by :func:`animation_command` first).
 
     >>> import robotconf as rc
     >>> robot = rc.Robot([rc.Module("Rz")], end_effector=(1, 0, 0))
     >>> motion = rc.simulate(robot, {"q1": rc.signals.Constant(0.5)}, t_end=2, dt=0.5)
-    >>> duration, path = animation_state(motion)
-    >>> duration, path.shape
-    (2.0, (5, 3))
+    >>> duration, points = animation_state(motion)
+    >>> duration, points.shape
+    (2.0, (5, 2, 3))
     """
     t = np.asarray(motion.t, dtype=float)
-    path = np.asarray(motion.position, dtype=float)[_keyframes(len(t)), -1]
+    points = np.asarray(motion.position, dtype=float)[_keyframes(len(t))]
     duration = float(t[-1] - t[0]) if len(t) else 0.0
-    return duration, path
+    return duration, points
 
 
 def _keyframes(samples: int) -> np.ndarray:

@@ -239,7 +239,8 @@ class Scene:
         """Centre everything drawn and zoom until it fills the pane.
 
         The sphere holds the robot at its current ``q`` (base, frames, joint axes, end
-        effector), the ghosts, the target marker, the taught points and the point clouds.
+        effector), the ghosts, the target marker, the taught points, the point clouds and
+        where a loaded animation takes the robot.
         The camera keeps its direction; the scene's centre moves to the sphere's centre.
         """
         drawing = self._drawing()
@@ -263,7 +264,8 @@ class Scene:
         """Play a simulated motion in the pane; the page plays it to its end by itself.
 
         Labels show names only while the animation is loaded: the page replays
-        transforms, and a number that does not follow the robot would be wrong.
+        transforms, and a number that does not follow the robot would be wrong. The view
+        stays (the student chose it); **fit** then takes in the whole motion.
         :meth:`show` (or ``update``) drops the animation and brings the numbers back.
 
         Parameters
@@ -469,6 +471,7 @@ class Scene:
             self._target.extent(),
             self._taught.extent(),
             self._clouds.extent(),
+            self._playback.extent(),
         ]
 
     def _keep_in_view(self, points: np.ndarray) -> None:

@@ -46,6 +46,27 @@ function rcElement(tag, className, attributes = {}, text = "") {
   return element;
 }
 
+// ▶ and ⏸ drawn as shapes: not every system font has a pause glyph.
+function rcIcon(kind) {
+  const svg = document.createElementNS("http://www.w3.org/2000/svg", "svg");
+  svg.setAttribute("viewBox", "0 0 16 16");
+  svg.setAttribute("width", "12");
+  svg.setAttribute("height", "12");
+  svg.setAttribute("aria-hidden", "true");
+  const shapes =
+    kind === "play"
+      ? [["polygon", { points: "3,1 14,8 3,15" }]]
+      : [["rect", { x: "3", y: "2", width: "3.5", height: "12" }],
+         ["rect", { x: "9.5", y: "2", width: "3.5", height: "12" }]];
+  for (const [tag, attributes] of shapes) {
+    const shape = document.createElementNS("http://www.w3.org/2000/svg", tag);
+    for (const [name, value] of Object.entries(attributes)) shape.setAttribute(name, value);
+    shape.setAttribute("fill", "currentColor");
+    svg.appendChild(shape);
+  }
+  return svg;
+}
+
 function rcFormatSpeed(speed) {
   return `${Number(speed.toPrecision(3))}×`;
 }
@@ -61,7 +82,8 @@ function rcCreateBar(request) {
     type: "button",
     "aria-label": "play",
     title: "play the animation",
-  }, "▶");
+  });
+  play.append(rcIcon("play"));
   const speed = rcElement("select", "robotconf-scene-speed", {
     "aria-label": "playback speed",
     title: "playback speed",
@@ -137,7 +159,7 @@ function rcCreateBar(request) {
     if (play.getAttribute("aria-label") !== action) {
       play.setAttribute("aria-label", action);
       play.title = `${action} the animation`;
-      play.textContent = state.playing ? "⏸" : "▶";
+      play.replaceChildren(rcIcon(action));
     }
     setSpeeds(state.speed);
     if (off) {

@@ -17,6 +17,7 @@ const RC_STYLE = `
   background: var(--jp-brand-color1, #1976d2); border-color: var(--jp-brand-color1, #1976d2);
   color: #fff; }
 .robotconf-scene-play { min-width: 34px; }
+.robotconf-scene-play svg { display: block; margin: 2px auto; }
 .robotconf-scene-controls select.robotconf-scene-speed { width: 64px; padding: 2px 4px; }
 .robotconf-scene-time { flex: 1 1 110px; min-width: 80px; max-width: 260px; }
 .robotconf-scene-clock { min-width: 112px; font-variant-numeric: tabular-nums; }
