@@ -33,6 +33,7 @@ __all__ = [
     "set_object_op",
     "meshcat_op",
     "transforms_op",
+    "wire_matrices",
     "labels_op",
     "fit_op",
     "playback_op",
@@ -112,8 +113,15 @@ def _has_ext(value: Any) -> bool:
     return False
 
 
-def transforms_op(paths: Sequence[str], matrices: np.ndarray) -> Op:
-    """All transforms of one update: paths and one float32 buffer, column-major 4×4 each.
+def wire_matrices(matrices: np.ndarray) -> np.ndarray:
+    """4×4 matrices (..., 4, 4) as the viewer reads them: float32 (what WebGL uses anyway)
+    and column-major (three.js ``Matrix4.fromArray``)."""
+    return np.ascontiguousarray(np.swapaxes(matrices, -1, -2), dtype=np.float32)
+
+
+def transforms_op(paths: Sequence[str], matrices: np.ndarray, *, wired: bool = False) -> Op:
+    """All transforms of one update: paths and one float32 buffer, column-major 4×4 each
+    (``wired``: the matrices are :func:`wire_matrices` already).
 
     Examples
     --------
@@ -121,8 +129,7 @@ def transforms_op(paths: Sequence[str], matrices: np.ndarray) -> Op:
     >>> op.content["paths"], len(op.buffers[0])
     (['/meshcat/a'], 64)
     """
-    # three.js Matrix4.fromArray reads column-major; float32 is what WebGL uses anyway.
-    data = np.ascontiguousarray(np.swapaxes(matrices, -1, -2), dtype=np.float32).tobytes()
+    data = (matrices if wired else wire_matrices(matrices)).tobytes()
     return Op({"op": "transforms", "paths": list(paths)}, (data,))
 
 

@@ -26,6 +26,7 @@ from ._commands import (
     set_object_op,
     shape_object,
     transforms_op,
+    wire_matrices,
 )
 from ._drawing import RobotDrawing, snapshot_size, structure_of
 from ._labels import label_digits, merge_coincident
@@ -102,12 +103,13 @@ class RobotLayer:
                 self._texts_known.clear()
             self.digits = digits
         self.snapshot = snapshot
-        matrices = drawing.place(snapshot)
-        changed = self._shown.transforms(matrices)
+        wire = wire_matrices(drawing.place(snapshot))
+        changed = self._shown.transforms(wire)
         live: list[Op] = []
         if len(changed):
-            live.append(transforms_op([self._paths[k] for k in changed], matrices[changed]))
-        logged = [transforms_op(self._paths, matrices)]
+            paths = [self._paths[k] for k in changed]
+            live.append(transforms_op(paths, wire[changed], wired=True))
+        logged = [transforms_op(self._paths, wire, wired=True)]
         label_live, label_logged = self._label_ops()
         self._outbox.send(live + label_live, logged=logged + label_logged)
         return rebuilt
@@ -245,9 +247,9 @@ class Shown:
         """Transforms must be sent again (an animation moved the objects)."""
         self._matrices = None
 
-    def transforms(self, matrices: np.ndarray) -> np.ndarray:
-        """Indices of the items whose float32 matrix differs from the last one sent."""
-        wire = matrices.astype(np.float32)
+    def transforms(self, wire: np.ndarray) -> np.ndarray:
+        """Indices of the items whose matrix, as the viewer gets it (float32), differs
+        from the last one sent."""
         last = self._matrices
         self._matrices = wire
         if last is None or last.shape != wire.shape:
