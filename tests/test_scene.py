@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -306,16 +307,25 @@ def test_export_html_is_self_contained(scene: Scene, tmp_path) -> None:  # type:
     assert json.loads(log)["ops"]
 
 
-def test_viewer_bundle_comes_from_the_meshcat_package_or_says_how_to_install_it(
-    monkeypatch: pytest.MonkeyPatch,
+def test_viewer_bundle_is_robotconfs_copy_else_meshcats_else_says_how_to_get_it(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
 ) -> None:
     from robotconf.scene import _assets
 
+    # The build's copy (an installed wheel, or this editable checkout once built).
+    copy = tmp_path / "main.min.js"
+    copy.write_text("// viewer", encoding="utf-8")
+    monkeypatch.setattr(_assets, "PACKAGED", copy)
+    assert _assets.meshcat_bundle() == copy
+
+    # A source tree that was not built: an installed meshcat package, read as a file.
+    monkeypatch.setattr(_assets, "PACKAGED", tmp_path / "absent.js")
     bundle = _assets.meshcat_bundle()
     assert bundle.parts[-4:] == ("meshcat", "viewer", "dist", "main.min.js")
     assert bundle.stat().st_size > 500_000
+
     monkeypatch.setattr(_assets, "find_spec", lambda name: None)
-    with pytest.raises(RuntimeError, match=r"meshcat is not installed.*pip install meshcat"):
+    with pytest.raises(RuntimeError, match=r"not built.*Reinstall robotconf.*pip install meshcat"):
         _assets.meshcat_bundle()
 
 
