@@ -12,67 +12,39 @@ edge and the nearest text, twice that between the text of neighbouring axes.
 
 from __future__ import annotations
 
-import textwrap
 from collections.abc import Sequence
 from typing import Any
 
 import numpy as np
 
-__all__ = ["PAD", "place_grid", "wrap_to_width", "renderer_of"]
+from ._drawing import renderer_of, ticks_once
+
+__all__ = ["PAD", "place_grid", "grid_of"]
 
 #: Space around every axes' decorations, in inches (constrained layout's w_pad, h_pad).
 PAD = 3 / 72
-
-
-def renderer_of(fig: Any) -> Any:
-    """The renderer ``fig.savefig`` and a notebook's display will draw with.
-
-    The figure gets an Agg canvas of its own (a bare Figure's base canvas makes a new
-    one, with a new renderer and empty text caches, at every save).
-    """
-    from matplotlib.backends.backend_agg import FigureCanvasAgg
-
-    if not isinstance(fig.canvas, FigureCanvasAgg):
-        FigureCanvasAgg(fig)
-    return fig.canvas.get_renderer()
-
-
-def text_width(renderer: Any, text: Any, string: str) -> float:
-    """Width in pixels of ``string`` drawn with the font of the Text artist ``text``."""
-    width, _, _ = renderer.get_text_width_height_descent(
-        string, text.get_fontproperties(), ismath=False
-    )
-    return float(width)
-
-
-def wrap_to_width(text: Any, width: float) -> None:
-    """Break ``text`` (a Text artist of a figure) into lines no wider than ``width``
-    pixels.
-
-    matplotlib's own ``wrap=True`` measures the text word by word at every draw; this
-    measures it a few times, once.
-    """
-    renderer = renderer_of(text.figure)
-    string = " ".join(text.get_text().split())
-    average = text_width(renderer, text, string) / max(len(string), 1)
-    columns = max(int(width / max(average, 1e-9)), 10)
-    while True:
-        lines = textwrap.wrap(string, columns, break_on_hyphens=False)
-        if columns <= 10 or max(text_width(renderer, text, line) for line in lines) <= width:
-            break
-        columns = int(columns * 0.95)
-    text.set_text("\n".join(lines))
 
 
 def _overhangs(axes: np.ndarray, renderer: Any) -> np.ndarray:
     """Decorations beyond each axes' box, in pixels: (rows, cols, 4) as left, right,
     bottom, top."""
     out = np.zeros((*axes.shape, 4))
-    for (r, c), ax in np.ndenumerate(axes):
-        box = ax.get_position().transformed(ax.figure.transFigure)
-        tight = ax.get_tightbbox(renderer, for_layout_only=True)
-        out[r, c] = (box.x0 - tight.x0, tight.x1 - box.x1, box.y0 - tight.y0, tight.y1 - box.y1)
+    with ticks_once(axes.flat):
+        for (r, c), ax in np.ndenumerate(axes):
+            box = ax.get_position().transformed(ax.figure.transFigure)
+            tight = ax.get_tightbbox(renderer, for_layout_only=True)
+            out[r, c] = (
+                box.x0 - tight.x0,
+                tight.x1 - box.x1,
+                box.y0 - tight.y0,
+                tight.y1 - box.y1,
+            )
     return np.maximum(out, 0.0)
+
+
+def _ticks(axes: np.ndarray) -> list[list[float]]:
+    """Where each axis' ticks are for the axes' current sizes."""
+    return [list(axis.get_majorticklocs()) for ax in axes.flat for axis in (ax.xaxis, ax.yaxis)]
 
 
 def place_grid(
@@ -124,8 +96,10 @@ def place_grid(
     if legend is not None:
         right -= legend.get_window_extent(renderer).width + pad
     rows, cols = axes.shape
-    # Twice: new sizes can change the ticks (and so the labels) a little.
-    for _ in range(2):
+    # New sizes can move the ticks (and so change the labels): measure again until
+    # they stay where they were measured, which they nearly always do at once.
+    for _ in range(3):
+        measured = _ticks(axes)
         hang = _overhangs(axes, renderer)
         left_of, right_of = hang[..., 0].max(axis=0), hang[..., 1].max(axis=0)
         below, above = hang[..., 2].max(axis=1), hang[..., 3].max(axis=1)
@@ -134,17 +108,16 @@ def place_grid(
         cell_h = (top - bottom - below.sum() - above.sum() - 2 * pad * (rows - 1)) / rows
         x = pad + np.concatenate([[0.0], np.cumsum(left_of + cell_w + right_of + 2 * pad)])
         y = top - np.concatenate([[0.0], np.cumsum(above + cell_h + below + 2 * pad)])
-        moved = 0.0
         for (r, c), ax in np.ndenumerate(axes):
-            box = (
-                (x[c] + left_of[c]) / width,
-                (y[r] - above[r] - cell_h) / height,
-                max(cell_w, 1.0) / width,
-                max(cell_h, 1.0) / height,
+            ax.set_position(
+                (
+                    (x[c] + left_of[c]) / width,
+                    (y[r] - above[r] - cell_h) / height,
+                    max(cell_w, 1.0) / width,
+                    max(cell_h, 1.0) / height,
+                )
             )
-            moved = max(moved, float(np.max(np.abs(np.subtract(ax.get_position().bounds, box)))))
-            ax.set_position(box)
-        if moved * max(width, height) < 0.5:
+        if _ticks(axes) == measured:
             break
 
 

@@ -88,8 +88,9 @@ class MotionFigure:
         compare: Motion | None = None,
         dpi: float | None = None,
     ) -> None:
+        from ._drawing import wrap_to_width
         from ._figures import new_figure
-        from ._grid_layout import PAD, wrap_to_width
+        from ._grid_layout import PAD
 
         if compare is not None:
             _check_comparable(motion, compare)
@@ -115,6 +116,7 @@ class MotionFigure:
         self._shown: list[int] | None = None
         self._title: Any = None
         self._legend: Any = None
+        self._laid_out_for: Any = None
         note = kink_note(motion)
         self._note = None
         if note is not None:
@@ -165,14 +167,28 @@ class MotionFigure:
             ax.set_title(f"{names[0]}: {axis}" if single else axis, **PLAIN)
         self._titles(names, single, clipped)
         self._shown = indices
-        place_grid(
-            self.figure,
-            self.axes,
-            title=self._title,
-            note=self._note,
-            legend=self._legend,
+        # The layout depends on these only (ticks and their labels follow the limits): a
+        # point whose curves get the last one's limits (a module at rest) keeps its layout.
+        decides = (
+            [(ax.get_xlim(), ax.get_ylim(), self._title_overflow(ax)) for ax in self.axes.flat],
+            self._title.get_text().count("\n"),  # its height: centred, its width is free
+            None if self._legend is None else [t.get_text() for t in self._legend.texts],
         )
+        if decides != self._laid_out_for:
+            place_grid(
+                self.figure, self.axes, title=self._title, note=self._note, legend=self._legend
+            )
+            self._laid_out_for = decides
         return self.figure
+
+    def _title_overflow(self, ax: Any) -> float:
+        """How far ``ax``'s title is wider than the axes, in pixels (0 if it fits)."""
+        from ._drawing import renderer_of, text_width
+
+        if not ax.get_title():
+            return 0.0
+        width = text_width(renderer_of(self.figure), ax.title, ax.get_title())
+        return max(0.0, width - ax.bbox.width)
 
     def _new_lines(self, points: int) -> None:
         """(Re)create each axes' lines for ``points`` points: the runs' curves first (in
@@ -202,9 +218,11 @@ class MotionFigure:
             method += f", {compare.method} dashed"
             if clipped:
                 method += ", its spikes cut at the axes"
-        self._title = self.figure.suptitle(
-            f"{motion.robot.name or 'Robot'}: {shown} ({method})", **PLAIN
-        )
+        text = f"{motion.robot.name or 'Robot'}: {shown} ({method})"
+        if self._title is None:
+            self._title = self.figure.suptitle(text, **PLAIN)
+        else:  # where the layout put it (a new suptitle call would move it back)
+            self._title.set_text(text)
         if self._legend is not None:
             self._legend.remove()
             self._legend = None

@@ -13,7 +13,8 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import Any
 
-from ._grid_layout import PAD, renderer_of, text_width
+from ._drawing import renderer_of, text_width
+from ._grid_layout import PAD
 
 __all__ = ["fill_figure", "keep_labels_inside"]
 

@@ -144,10 +144,6 @@ def write_matrices(robot: Robot, out: Path, symbolic: str) -> list[str]:
     return ["matrices.txt", "matrices.tex"]
 
 
-def save_figure(fig: Figure, path: Path) -> None:
-    fig.savefig(path, dpi=DPI)
-
-
 def write_plots(motion: Motion, out: Path, unit: str, say: Callable[[str], None]) -> list[str]:
     """Write robot.png, q.png, dva_EE.png and dva_M<i>.png; after each, ``say`` gets
     ``"dva_M2.png (figure 5 of 6)"``.
@@ -157,13 +153,13 @@ def write_plots(motion: Motion, out: Path, unit: str, say: Callable[[str], None]
     """
     import numpy as np
 
-    from ..plots import MotionFigure, plot_coordinates, plot_robot
+    from ..plots import MotionFigure, plot_coordinates, plot_robot, save_figure
 
     names: list[str] = []
     count = 3 + min(motion.robot.n, MAX_MODULE_PLOTS)
 
     def save(fig: Figure, name: str) -> None:
-        save_figure(fig, out / name)
+        save_figure(fig, out / name, dpi=DPI)
         names.append(name)
         say(f"{name} (figure {len(names)} of {count})")
 
