@@ -21,8 +21,7 @@ from matplotlib.figure import Figure  # noqa: E402
 import robotconf as rc  # noqa: E402
 from robotconf.motion import SimulationSettings, simulate  # noqa: E402
 from robotconf.plots import MotionFigure, plot_coordinates, plot_motion, plot_robot  # noqa: E402
-from robotconf.report import DPI, write_report  # noqa: E402
-from robotconf.report._steps import DVA_SIZE  # noqa: E402
+from robotconf.report import DPI, DVA_SIZE, write_report  # noqa: E402
 from robotconf.signals import RepeatingSequence, Sine  # noqa: E402
 
 QUANTITIES = ("displacement", "velocity", "acceleration")

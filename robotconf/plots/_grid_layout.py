@@ -1,10 +1,11 @@
-"""A grid of equal axes laid out in one measuring pass, with constrained layout's spacing.
+"""A grid of equal axes laid out once, when it is built, with constrained layout's spacing.
 
 Constrained layout measures every axes' tick labels on two iterations at every draw, and
 ``savefig`` draws a figure with a layout engine twice (once to lay it out, once for real):
-a 3 × 3 DVA figure spent two thirds of its time there. A grid of equal axes needs only
-the widest decoration of each column and the tallest of each row, measured once, so the
-figures that use this module are built without a layout engine and placed here.
+a 3 × 3 DVA figure spent most of its time there. A grid of equal axes needs only the
+widest decoration of each column and the tallest of each row, measured once (again only
+if the new sizes moved the ticks), so the figures that use this module are built without
+a layout engine and placed here.
 
 Spacing follows constrained layout's defaults: ``PAD`` (3 points) between the figure's
 edge and the nearest text, twice that between the text of neighbouring axes.
