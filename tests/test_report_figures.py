@@ -239,3 +239,15 @@ def test_report_says_each_figure_as_it_is_written(tmp_path):
     ]
     assert all(png_size(out / name) == (1000, 650) for name in names[2:])
     assert png_size(out / "robot.png") == (700, 600)
+
+
+def test_point_names_in_the_legend_are_drawn_literally():
+    robot = rc.Robot(
+        [rc.Module("Rz", name="$x$$"), rc.Module("Ry", a=(0, 0, 1), name="$\\frac{a}{b}$")],
+        end_effector=(1, 0, 0),
+    )
+    motion = simulate(robot, {"q1": Sine()}, t_end=1.0, dt=0.1)
+    fig = plot_motion(motion, "all")
+    assert [t.get_text() for t in fig.legends[0].get_texts()] == list(motion.points)
+    assert all(not t.get_parse_math() for t in fig.legends[0].get_texts())
+    drawn(fig)  # "$x$$" as mathtext would raise here

@@ -234,6 +234,8 @@ class MotionFigure:
                 fontsize=8,
                 frameon=False,
             )
+            for entry in self._legend.get_texts():
+                entry.set(**PLAIN)  # point names come from files: never mathtext
 
 
 def _point_indices(motion: Motion, point: str | int | Sequence[str | int]) -> list[int]:
