@@ -1,7 +1,8 @@
 """Time of ``write_report`` for the paper robot, step by step, against an earlier version.
 
 Run: ``PYTHONPATH=. MPLBACKEND=Agg python benchmarks/bench_report.py`` (options:
-``--reference main`` the git revision to compare with, ``--repeat 5``, ``--cold``).
+``--reference REV`` the git revision to compare with, by default where this branch left
+main; ``--repeat 5``; ``--cold``).
 
 Target: the whole report of the paper robot (q3 = Simulink's default sawtooth, t_end =
 10 s, dt = 0.01 s, symbolic matrices and scene included), as ``robotconf report`` and
@@ -13,8 +14,9 @@ run right after the current one so that both see the same load. Each step is tim
 the ``say`` progress lines; the current version also says each figure. Times are the
 best of ``--repeat`` runs after a warm-up (imports, the symbolic derivation's cache), in
 wall-clock seconds and in this process's CPU seconds: on a busy shared machine the CPU
-time is close to what a quiet machine's wall clock shows. ``--cold`` also runs each
-version once in a fresh interpreter, imports included, as the command line does.
+time is much closer than the wall clock to what a quiet machine's wall clock shows.
+``--cold`` also runs each version once in a fresh interpreter, imports included, as the
+command line does.
 """
 
 from __future__ import annotations
@@ -64,6 +66,21 @@ def extract(revision: str, into: Path) -> ModuleType | None:
     (into / "robotconf").rename(into / REFERENCE_PACKAGE)
     sys.path.insert(0, str(into))
     return importlib.import_module(REFERENCE_PACKAGE)
+
+
+def fork_point() -> str:
+    """The commit where HEAD left main (main itself when git cannot tell)."""
+    try:
+        found = subprocess.run(
+            ["git", "merge-base", "HEAD", "main"],
+            cwd=ROOT,
+            capture_output=True,
+            text=True,
+            check=True,
+        )
+    except (OSError, subprocess.CalledProcessError):
+        return "main"
+    return found.stdout.strip()[:10] or "main"
 
 
 def one_report(package: ModuleType, out: Path) -> list[tuple[str, Clock]]:
@@ -134,10 +151,16 @@ def cold(package_dir: Path, name: str) -> Clock:
 
 def main() -> None:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--reference", default="main", help="git revision to compare with")
+    parser.add_argument(
+        "--reference",
+        default=None,
+        help="git revision to compare with (default: where HEAD left main)",
+    )
     parser.add_argument("--repeat", type=int, default=5)
     parser.add_argument("--cold", action="store_true", help="also time fresh interpreters")
     args = parser.parse_args()
+    if args.reference is None:
+        args.reference = fork_point()
     work = Path(tempfile.mkdtemp(prefix="bench_report_"))
     try:
         reference = extract(args.reference, work)
@@ -170,7 +193,9 @@ def fmt(clock: Clock) -> str:
     return f"{clock[0]:6.3f} s wall {clock[1]:6.3f} s cpu"
 
 
-def report(current: dict[str, Clock], reference: dict[str, Clock] | None, args) -> None:  # type: ignore[no-untyped-def]
+def report(
+    current: dict[str, Clock], reference: dict[str, Clock] | None, args: argparse.Namespace
+) -> None:
     header = f"{'step':<22}{'current (wall, cpu)':>28}"
     if reference is not None:
         header += f"{args.reference + ' (wall, cpu)':>30}{'ratio (cpu)':>13}"
