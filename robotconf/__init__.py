@@ -214,6 +214,7 @@ __all__ = [
     "plot_workspace",
     "view",
     "Scene",
+    "CellScene",
     "configurator",
     "Configurator",
 ]
@@ -245,6 +246,7 @@ _LAZY = {
     "configurator": "panel",
     "Configurator": "panel",
     "Scene": "scene",
+    "CellScene": "scene",
     "view": "scene",
 }
 
