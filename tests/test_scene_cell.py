@@ -251,7 +251,17 @@ def test_bad_input_is_refused_before_anything_is_drawn(scene: CellScene, cell: r
 
 def test_capsules_are_the_cells_own(scene: CellScene, cell: rc.Cell) -> None:
     root = f"{CAPSULES}/{key(scene, 'arm')}"
-    segments, radii = cell.link_capsules("arm", [0, 0, 0])
+    # Hidden, they are built but not moved at each q step: no transform of theirs yet.
+    assert scene.capsules_shown is False
+    assert not any(path.startswith(CAPSULES) for path in transforms(scene.channel))
+    visible = [op.content for op in scene.channel.ops if op.content["op"] == "visible"]
+    assert {"op": "visible", "paths": [CAPSULES], "value": False} in visible
+    scene.show(cell, {"arm": [0.5, 0.0, 0.0]})
+    # The bar's capsules button: the kernel places and shows them, and says so.
+    scene.receive_from_page({"kind": "request", "request": {"kind": "capsules", "value": True}})
+    assert scene.capsules_shown is True
+    assert scene.channel.ops[-1].content["capsules"] is True
+    segments, radii = cell.link_capsules("arm", [0.5, 0.0, 0.0])
     sent, moved = objects(scene.channel), transforms(scene.channel)
     for k, ((a, b), radius) in enumerate(zip(segments, radii, strict=True)):
         body = sent[f"{root}/{k}/body"]
@@ -262,20 +272,13 @@ def test_capsules_are_the_cells_own(scene: CellScene, cell: rc.Cell) -> None:
         # The unit cylinder stretched to the link's length, along it.
         along = moved[f"{root}/{k}/body"][:3, :3] @ [0, 1, 0]
         np.testing.assert_allclose(along, b - a, atol=1e-4)
-    # Link 3, the forearm, (30, 0, 20) → (70, 0, 20): hand-derived.
-    np.testing.assert_allclose(segments[2], [[30, 0, 20], [70, 0, 20]])
-    visible = [op.content for op in scene.channel.ops if op.content["op"] == "visible"]
-    assert {"op": "visible", "paths": [CAPSULES], "value": False} in visible
-    assert scene.capsules_shown is False
-    # The bar's capsules button: the kernel switches them and says so in the options.
-    scene.receive_from_page({"kind": "request", "request": {"kind": "capsules", "value": True}})
-    assert scene.capsules_shown is True
-    assert scene.channel.ops[-1].content["capsules"] is True
-    # A new q moves them with the links.
-    scene.show(cell, {"arm": [0.5, 0.0, 0.0]})
-    segments, _ = cell.link_capsules("arm", [0.5, 0.0, 0.0])
+    # Link 3, the forearm, (30, 0, 20) → (70, 0, 20) turned 0.5 rad about z: hand-derived.
+    turn = np.array([np.cos(0.5), np.sin(0.5), 0.0])
+    np.testing.assert_allclose(segments[2], [30 * turn + [0, 0, 20], 70 * turn + [0, 0, 20]])
+    # Shown, they follow each new q.
+    scene.show(cell, {"arm": [0.0, 0.0, 0.0]})
     np.testing.assert_allclose(
-        transforms(scene.channel)[f"{root}/2/end1"][:3, 3], segments[2, 1], atol=1e-5
+        transforms(scene.channel)[f"{root}/2/end1"][:3, 3], [70, 0, 20], atol=1e-5
     )
 
 
@@ -314,3 +317,21 @@ def test_the_view_holds_the_whole_cell(scene: CellScene) -> None:
     corners = np.array([[x, y, z] for x in (-20, 100) for y in (-40, 40) for z in (-10, 0)])
     assert (np.linalg.norm(corners - centre, axis=1) <= radius).all()
     assert fit["radius"] == pytest.approx(radius / scene._size)
+
+
+def test_a_cell_grown_past_its_scale_rescales_triads_and_label_clearances(
+    scene: CellScene, cell: rc.Cell
+) -> None:
+    before = scene._size
+    # A floor ten times the table: the cell's size grows past RESIZE_FACTOR.
+    cell.add(rc.Box([1200, 800, 10], pose=rc.pose([40, 0, -20]), name="floor"))
+    scene.show(cell)
+    assert scene._size > 2 * before
+    moved = transforms(scene.channel)
+    triad = 0.08 * scene._size
+    pick = moved[f"{FRAMES}/{key(scene, 'table/pick')}"]
+    np.testing.assert_allclose(np.linalg.norm(pick[:3, 0]), triad, rtol=1e-6)
+    # Every label anchor (the fixture's, which did not move, too) stands off by 0.15 triad.
+    for name in ("fixture", "table", "table/pick", "floor"):
+        anchor = moved[f"{NAMES}/{key(scene, name)}"]
+        np.testing.assert_allclose(anchor[0, 0], 0.15 * triad, rtol=1e-6)

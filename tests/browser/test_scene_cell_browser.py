@@ -110,6 +110,7 @@ def test_cell_shows_a_contact_in_red_and_exports(lab: Lab, page) -> None:  # typ
     capsules.click()
     page.wait_for_timeout(800)
     assert capsules.get_attribute("aria-pressed") == "true"
+    page.screenshot(path=str(SCREENSHOTS / "cell_capsules.png"))
 
     run_cell(page, 3)
     wait_idle(page)

@@ -12,12 +12,17 @@ along y, turned onto the segment and stretched to its length) and a ball at each
 
 from __future__ import annotations
 
+from typing import TYPE_CHECKING, Any
+
 import numpy as np
 
 from .._commands import Op, Outbox, set_object_op, shape_object, transforms_op
 from .._ghosts import faint
 from .._placement import Placement, align_y
 from ._paths import CAPSULES, PathKeys
+
+if TYPE_CHECKING:
+    from ...cell import Cell
 
 __all__ = [
     "CapsulesLayer",
@@ -94,6 +99,10 @@ def capsule_paths(root: str, links: int) -> list[str]:
 class CapsulesLayer:
     """Every robot's capsules, see-through, moved with the robots.
 
+    The capsules' objects exist for every robot (a run animates them, a view may switch
+    them on); while they are hidden they are not moved at each ``q`` step, only marked
+    :attr:`stale`, and placed when they show (or a new view asks for the scene).
+
     Parameters
     ----------
     outbox : Outbox
@@ -104,7 +113,8 @@ class CapsulesLayer:
     --------
     >>> from robotconf.scene import RecordingChannel
     >>> layer = CapsulesLayer(Outbox(RecordingChannel()), PathKeys())
-    >>> layer.show({"arm": (np.array([[[0.0, 0, 0], [0, 0, 20.0]]]), np.array([3.6]))})
+    >>> layer.build({"arm": np.array([3.6])})
+    >>> layer.place({"arm": np.array([[[0.0, 0, 0], [0, 0, 20.0]]])})
     >>> layer.paths("arm")
     ['/meshcat/robotconf/cell/capsules/e1/0/body', '/meshcat/robotconf/cell/capsules/e1/0/end0', \
 '/meshcat/robotconf/cell/capsules/e1/0/end1']
@@ -114,37 +124,69 @@ class CapsulesLayer:
         self._outbox = outbox
         self._keys = keys
         self.visible = False
+        #: Whether the views show the capsules where the robots were, not where they are.
+        self.stale = False
         self._radii: dict[str, tuple[float, ...]] = {}
         self._shown: dict[str, bytes] = {}  # robot → its transforms as the views have them
+        self._where: tuple[Cell, dict[str, Any]] | None = None  # the cell, its snapshots
 
     def paths(self, robot: str) -> list[str]:
         """A robot's capsule items, in :func:`capsule_placement`'s order."""
         return capsule_paths(f"{CAPSULES}/{self._keys.key(robot)}", len(self._radii[robot]))
 
-    def show(self, capsules: dict[str, tuple[np.ndarray, np.ndarray]]) -> None:
-        """Place every robot's capsules: ``{robot: (segments (L, 2, 3), radii (L,))}`` in
-        the cell's frame (a robot left out loses its capsules)."""
-        for name in [n for n in self._radii if n not in capsules]:
+    def build(self, radii: dict[str, np.ndarray]) -> None:
+        """Make every robot's capsule objects, ``{robot: radii (L,)}`` (rebuilt where the
+        radii changed; a robot left out loses its capsules)."""
+        for name in [n for n in self._radii if n not in radii]:
             self.forget(name)
         built: list[Op] = []
+        for name, values in radii.items():
+            wanted = tuple(float(r) for r in values)
+            if self._radii.get(name) == wanted:
+                continue
+            self._outbox.delete(f"{CAPSULES}/{self._keys.key(name)}")
+            self._shown.pop(name, None)
+            self._radii[name] = wanted
+            built += capsule_objects(self.paths(name), values, CAPSULE_COLOR, CAPSULE_OPACITY)
+        if built:
+            self._outbox.send([*built, self.visibility_op()])
+            self.stale = True
+
+    def place(self, segments: dict[str, np.ndarray]) -> None:
+        """Move every robot's capsules to ``{robot: segments (L, 2, 3)}`` (cell frame):
+        the robots whose capsules moved in one message."""
         live: list[Op] = []
         logged: list[Op] = []
-        for name, (segments, radii) in capsules.items():
-            root = f"{CAPSULES}/{self._keys.key(name)}"
-            if self._radii.get(name) != tuple(float(r) for r in radii):
-                self._outbox.delete(root)
-                self._shown.pop(name, None)
-                self._radii[name] = tuple(float(r) for r in radii)
-                paths = self.paths(name)
-                built += capsule_objects(paths, radii, CAPSULE_COLOR, CAPSULE_OPACITY)
-            op = transforms_op(self.paths(name), capsule_placement(segments).matrices())
+        for name, ends in segments.items():
+            op = transforms_op(self.paths(name), capsule_placement(ends).matrices())
             logged.append(op)
             if self._shown.get(name) != op.buffers[0]:
                 self._shown[name] = op.buffers[0]
                 live.append(op)
-        if built:
-            built.append(self.visibility_op())
-        self._outbox.send(built + live, logged=built + logged)
+        self._outbox.send(live, logged=logged)
+        self.stale = False
+
+    def follow(self, cell: Cell, snapshots: dict[str, Any]) -> None:
+        """The robots stand as ``snapshots`` (``{robot: RobotSnapshot}``) in ``cell``:
+        capsules rebuilt where the radii changed, placed now if they show, else marked
+        :attr:`stale` (placed by :meth:`catch_up`)."""
+        radii = {}
+        for name in snapshots:
+            links = cell.robot_entry(name).links
+            assert links is not None  # every robot of a cell has its link model
+            radii[name] = links.radii
+        self.build(radii)
+        self._where = (cell, snapshots)
+        self.stale = True
+        if self.visible:
+            self.catch_up()
+
+    def catch_up(self) -> None:
+        """Place stale capsules where the robots are (one kernel pass per robot)."""
+        if not self.stale or self._where is None:
+            return
+        cell, snapshots = self._where
+        self.place({name: cell.link_capsules(name, s.q)[0] for name, s in snapshots.items()})
 
     def forget(self, name: str) -> None:
         """A robot left the cell: its capsules go."""

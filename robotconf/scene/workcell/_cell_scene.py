@@ -188,15 +188,17 @@ class CellScene:
         first = self._cell is None
         self._cell = cell
         rebuilt = self._robots.show(cell, snapshots)
-        size = self._cell_size(cell)
+        self._entities.show(cell, triad=self._triad(), mode=self.label_mode, digits=self._digits())
+        size = self._cell_size()
         rescaled = first or not 1 / RESIZE_FACTOR <= size / self._size <= RESIZE_FACTOR
         if rescaled:
             self._size = size
             self._outbox.send([scale_command(size)])
-        self._entities.show(cell, triad=self._triad(), mode=self.label_mode, digits=self._digits())
-        self._capsules.show(
-            {name: cell.link_capsules(name, snap.q) for name, snap in snapshots.items()}
-        )
+            # The frames' triads and the labels' clearances follow the cell's size.
+            self._entities.show(
+                cell, triad=self._triad(), mode=self.label_mode, digits=self._digits()
+            )
+        self._capsules.follow(cell, snapshots)
         self._selection.follow(self._entities, self._robots, self._triad())
         if rescaled or rebuilt:
             self.fit_view()
@@ -252,7 +254,9 @@ class CellScene:
     def show_capsules(self, visible: bool = True) -> None:
         """Show the robots' collision capsules, see-through (as the checks measure the
         links), or hide them."""
-        self._capsules.set_visible(check_flag(visible, "visible"))
+        if visible := check_flag(visible, "visible"):
+            self._capsules.catch_up()
+        self._capsules.set_visible(visible)
         self._outbox.send([self._options_op()])
 
     def fit_view(self) -> None:
@@ -445,6 +449,7 @@ class CellScene:
         )
 
     def _replay(self, *, from_start: bool = False) -> list[Op]:
+        self._capsules.catch_up()  # a new view (or a page) may switch them on
         return self._playback.replay(self._outbox.log.ops(), from_start=from_start)
 
     def _drop_animation(self) -> None:
@@ -461,13 +466,10 @@ class CellScene:
     def _triad(self) -> float:
         return TRIAD_SHARE * self._size
 
-    def _cell_size(self, cell: Cell) -> float:
+    def _cell_size(self) -> float:
         """The cell's size: its largest robot's, or the diagonal of the box around
-        everything in it, whichever is larger (1 for an empty cell)."""
-        obstacles, _ = cell.obstacles()
-        points = [self._robots.extent(), obstacles.low, obstacles.high]
-        points += [cell.pose_of(name)[None, :3, 3] for name in cell.frames]
-        every = np.vstack(points)
+        everything drawn, whichever is larger (1 for an empty cell)."""
+        every = np.vstack([self._robots.extent(), self._entities.extent()])
         diagonal = float(np.linalg.norm(np.ptp(every, axis=0))) if len(every) else 0.0
         size = max(self._robots.size, diagonal)
         return size if size > 0 and np.isfinite(size) else 1.0

@@ -42,17 +42,32 @@ LABEL_CLEARANCE = 0.15
 @dataclass
 class Drawn:
     """An entry as the views show it: its path key, kind, shape (objects), pose in the
-    cell's frame, and where its label stands."""
+    cell's frame, its label's point and text, and its box's corners (cell frame)."""
 
     key: str
     kind: str
     shape: Shape | None
     pose: np.ndarray
     label_point: np.ndarray
+    corners: np.ndarray
+    text: str = ""
+
+    @property
+    def path(self) -> str:
+        """The scene path of its drawing."""
+        return f"{OBJECTS if self.kind == 'object' else FRAMES}/{self.key}"
+
+    @property
+    def anchor(self) -> str:
+        """The scene path of its label's anchor."""
+        return f"{NAMES}/{self.key}"
 
 
 class EntitiesLayer:
     """Objects and frames of a cell, drawn and moved by the cell's own numbers.
+
+    Each entry remembers what the views show of it, so an entry that did not move costs a
+    comparison of its pose: a robot's ``q`` step leaves the objects alone.
 
     Parameters
     ----------
@@ -79,8 +94,7 @@ class EntitiesLayer:
         self.drawn: dict[str, Drawn] = {}
         self.unit = ""
         self._triad = 0.0  # the frames' triad length
-        self._shown_matrices: dict[str, bytes] = {}  # path → the transform the views have
-        self._shown_texts: dict[str, str] = {}  # label path → its text in the views
+        self._labels: tuple[str, int, str] = ("", -1, "")  # mode, digits, unit of the texts
 
     def show(self, cell: Cell, *, triad: float, mode: str, digits: int) -> None:
         """Draw ``cell``'s objects and frames, sending what changed since the last call.
@@ -89,129 +103,137 @@ class EntitiesLayer:
         the labels read.
         """
         self.unit = f" {cell.unit}" if cell.unit else ""
-        objects = cell.objects
-        frames = cell.frames
-        obstacles, names = cell.obstacles()
-        top = dict(zip(names, obstacles.high[:, 2], strict=True))
-        wanted: dict[str, tuple[str, Shape | None]] = {n: ("object", s) for n, s in objects.items()}
-        wanted.update({name: ("frame", None) for name in frames})
-        build: list[Op] = []
+        wanted: dict[str, Shape | None] = dict(cell.objects)
+        wanted.update(dict.fromkeys(cell.frames))
         for name in [n for n in self.drawn if n not in wanted]:
             self._remove(name)
         new_meshes = sum(
             drawing_bytes(s)
-            for n, (kind, s) in wanted.items()
-            if s is not None and not same_geometry(self._shape(n), s)
+            for n, s in wanted.items()
+            if s is not None and not _same(self.drawn.get(n), s)
         )
-        check_memory("cell", f"<{len(objects)} objects>", 3 * new_meshes, "fewer mesh triangles")
-        for name, (kind, shape) in wanted.items():
+        check_memory("cell", f"<{len(wanted)} entries>", 3 * new_meshes, "fewer mesh triangles")
+        rescaled = triad != self._triad
+        self._triad = triad
+        relabel = (mode, digits, self.unit) != self._labels
+        self._labels = (mode, digits, self.unit)
+        build: list[Op] = []
+        moved: list[Drawn] = []
+        relabelled: list[Drawn] = []
+        for name, shape in wanted.items():
             old = self.drawn.get(name)
             pose = cell.pose_of(name)
-            key = self._keys.key(name)
-            if shape is not None:
-                point = np.array([pose[0, 3], pose[1, 3], top[name]])
-                if not same_geometry(old.shape if old else None, shape):
-                    build.append(set_object_op(f"{OBJECTS}/{key}", shape_object(shape)))
-            else:
-                point = pose[:3, 3].copy()
-                if old is None:
-                    build.append(set_object_op(f"{FRAMES}/{key}", unit_shape("triad", 1.0, 0)))
+            same_shape = _same(old, shape)
+            if old is not None and same_shape and np.array_equal(old.pose, pose):
+                if rescaled:
+                    moved.append(old)  # triads and label clearances follow the cell's size
+                if relabel:
+                    old.text = self._text(name, old.pose, mode, digits)
+                    relabelled.append(old)
+                continue
+            drawn = self._place(name, shape, pose, mode, digits)
+            if not same_shape and shape is not None:
+                build.append(set_object_op(drawn.path, shape_object(shape)))
             if old is None:
-                build.append(set_object_op(f"{NAMES}/{key}", label_anchor(1.0)))
-            self.drawn[name] = Drawn(key, kind, shape, pose, point)
-        self._triad = triad
+                if shape is None:
+                    build.append(set_object_op(drawn.path, unit_shape("triad", 1.0, 0)))
+                build.append(set_object_op(drawn.anchor, label_anchor(1.0)))
+            self.drawn[name] = drawn
+            moved.append(drawn)
+            relabelled.append(drawn)
         self._outbox.send(build)
-        self._send_state(mode, digits)
+        self._send(moved, relabelled)
 
-    def _shape(self, name: str) -> Shape | None:
-        drawn = self.drawn.get(name)
-        return None if drawn is None else drawn.shape
+    def _place(
+        self, name: str, shape: Shape | None, pose: np.ndarray, mode: str, digits: int
+    ) -> Drawn:
+        key = self._keys.key(name)
+        if shape is None:
+            corners = pose[None, :3, 3].copy()
+            point = pose[:3, 3].copy()
+        else:
+            corners = _corners(shape, pose)
+            point = np.array([pose[0, 3], pose[1, 3], corners[:, 2].max()])
+        kind = "frame" if shape is None else "object"
+        text = self._text(name, pose, mode, digits)
+        return Drawn(key, kind, shape, pose, point, corners, text)
+
+    def _text(self, name: str, pose: np.ndarray, mode: str, digits: int) -> str:
+        if mode == "off":
+            return ""
+        if mode == "names":
+            return name
+        return format_point(name, pose[:3, 3], digits) + self.unit
 
     def _remove(self, name: str) -> None:
         drawn = self.drawn.pop(name)
-        folder = OBJECTS if drawn.kind == "object" else FRAMES
-        for path in (f"{folder}/{drawn.key}", f"{NAMES}/{drawn.key}"):
-            self._outbox.delete(path)
-            self._shown_matrices.pop(path, None)
-            self._shown_texts.pop(path, None)
+        self._outbox.delete(drawn.path)
+        self._outbox.delete(drawn.anchor)
         self._keys.forget(name)
 
-    def _matrices(self) -> tuple[list[str], np.ndarray]:
-        """Every entry's transform: objects at their pose, frames at theirs with the
-        triad's length, label anchors at their points (their scale is the label's
-        clearance from the point)."""
-        paths, matrices = [], []
-        clearance = LABEL_CLEARANCE * self._triad
-        for drawn in self.drawn.values():
-            if drawn.kind == "object":
-                paths.append(f"{OBJECTS}/{drawn.key}")
-                matrices.append(drawn.pose)
-            else:
-                paths.append(f"{FRAMES}/{drawn.key}")
-                matrices.append(drawn.pose @ np.diag([self._triad] * 3 + [1.0]))
-            anchor = np.diag([clearance] * 3 + [1.0])
-            anchor[:3, 3] = drawn.label_point
-            paths.append(f"{NAMES}/{drawn.key}")
-            matrices.append(anchor)
-        return paths, np.array(matrices).reshape(-1, 4, 4)
+    def _matrices(self, drawn: Drawn) -> tuple[np.ndarray, np.ndarray]:
+        """The entry's transform (an object at its pose, a frame at its pose with the
+        triad's length) and its label anchor's (at its point; the anchor's scale is the
+        label's clearance from it)."""
+        matrix = (
+            drawn.pose
+            if drawn.shape is not None
+            else drawn.pose @ np.diag([self._triad] * 3 + [1.0])
+        )
+        anchor = np.diag([LABEL_CLEARANCE * self._triad] * 3 + [1.0])
+        anchor[:3, 3] = drawn.label_point
+        return matrix, anchor
 
-    def _send_state(self, mode: str, digits: int) -> None:
-        """The transforms and label texts that changed (live), each entry's own (log)."""
-        paths, matrices = self._matrices()
-        live_paths, live_rows, logged = [], [], []
-        for path, matrix in zip(paths, matrices, strict=True):
-            op = transforms_op([path], matrix[None])
-            logged.append(op)
-            if self._shown_matrices.get(path) != op.buffers[0]:
-                self._shown_matrices[path] = op.buffers[0]
-                live_paths.append(path)
-                live_rows.append(matrix)
-        live = [transforms_op(live_paths, np.array(live_rows))] if live_paths else []
-        label_live, label_logged = self._label_ops(mode, digits)
-        self._outbox.send(live + label_live, logged=logged + label_logged)
+    def _send(self, moved: list[Drawn], relabelled: list[Drawn]) -> None:
+        """One message for the live views (the moved entries' transforms, the changed
+        texts); each entry's own op in the log, so a new view replays every entry."""
+        paths: list[str] = []
+        rows: list[np.ndarray] = []
+        logged: list[Op] = []
+        for drawn in moved:
+            matrix, anchor = self._matrices(drawn)
+            paths += [drawn.path, drawn.anchor]
+            rows += [matrix, anchor]
+            logged.append(transforms_op([drawn.path], matrix[None]))
+            logged.append(transforms_op([drawn.anchor], anchor[None]))
+        live = [transforms_op(paths, np.array(rows))] if paths else []
+        if relabelled:
+            live.append(labels_op([d.anchor for d in relabelled], [d.text for d in relabelled]))
+            logged += [labels_op([d.anchor], [d.text]) for d in relabelled]
+        self._outbox.send(live, logged=logged)
 
     def texts(self, mode: str, digits: int) -> list[str]:
         """Each entry's label: its name, and in ``"positions"`` mode where its pose's
         origin is in the cell's frame, with the unit (``"off"``: no text)."""
-        if mode == "off":
-            return ["" for _ in self.drawn]
-        if mode == "names":
-            return list(self.drawn)
-        return [
-            format_point(name, drawn.pose[:3, 3], digits) + self.unit
-            for name, drawn in self.drawn.items()
-        ]
+        return [self._text(name, drawn.pose, mode, digits) for name, drawn in self.drawn.items()]
 
     def label_ops(self, mode: str, digits: int) -> list[Op]:
         """Every label's text in ``mode`` (for an exported page's own bar)."""
-        paths = [f"{NAMES}/{drawn.key}" for drawn in self.drawn.values()]
-        return [labels_op(paths, self.texts(mode, digits))] if paths else []
-
-    def _label_ops(self, mode: str, digits: int) -> tuple[list[Op], list[Op]]:
-        paths = [f"{NAMES}/{drawn.key}" for drawn in self.drawn.values()]
-        texts = self.texts(mode, digits)
-        changed = [k for k, path in enumerate(paths) if self._shown_texts.get(path) != texts[k]]
-        for k in changed:
-            self._shown_texts[paths[k]] = texts[k]
-        live = [labels_op([paths[k] for k in changed], [texts[k] for k in changed])]
-        logged = [labels_op([path], [text]) for path, text in zip(paths, texts, strict=True)]
-        return (live if changed else []), logged
+        if not self.drawn:
+            return []
+        anchors = [drawn.anchor for drawn in self.drawn.values()]
+        return [labels_op(anchors, self.texts(mode, digits))]
 
     def relabel(self, mode: str, digits: int) -> None:
-        """Send the labels again in another mode or precision (only the changed texts)."""
-        live, logged = self._label_ops(mode, digits)
-        self._outbox.send(live, logged=logged)
+        """Send the labels again in another mode or precision."""
+        self._labels = (mode, digits, self.unit)
+        for name, drawn in self.drawn.items():
+            drawn.text = self._text(name, drawn.pose, mode, digits)
+        self._send([], list(self.drawn.values()))
 
     def extent(self) -> np.ndarray:
         """Points the view must hold: each object's box corners in the cell's frame and
         each frame's origin, shape (k, 3)."""
-        points = [np.zeros((0, 3))]
-        for drawn in self.drawn.values():
-            if drawn.shape is None:
-                points.append(drawn.pose[None, :3, 3])
-            else:
-                points.append(_corners(drawn.shape, drawn.pose))
-        return np.vstack(points)
+        return np.vstack([np.zeros((0, 3)), *(drawn.corners for drawn in self.drawn.values())])
+
+
+def _same(drawn: Drawn | None, shape: Shape | None) -> bool:
+    """Whether an entry drawn so keeps its drawing for ``shape`` (a frame: None)."""
+    if drawn is None:
+        return False
+    if shape is None or drawn.shape is None:
+        return shape is None and drawn.shape is None
+    return shape is drawn.shape or same_geometry(drawn.shape, shape)
 
 
 def _corners(shape: Shape, pose: np.ndarray) -> np.ndarray:

@@ -86,6 +86,7 @@ class RobotsLayer:
         self.layers: dict[str, RobotLayer] = {}
         self.bases: dict[str, np.ndarray] = {}
         self._label_frames: dict[str, tuple[bytes, str, str | None]] = {}
+        self._moved: set[str] = set()  # robots an animation moved: drawn again in full
 
     def key(self, name: str) -> str:
         """A robot's path key."""
@@ -107,6 +108,11 @@ class RobotsLayer:
         snapshots = {}
         for name in cell.robots:
             robot = cell.robot(name)
+            layer = self.layers.get(name)
+            shown = None if layer is None else layer.snapshot
+            if name not in qs and shown is not None and shown.robot is robot:
+                snapshots[name] = shown  # the same robot where it was: no kernel pass
+                continue
             try:
                 snapshots[name] = robot.at(self._q(name, robot, qs))
             except InvalidInputError as error:
@@ -135,6 +141,9 @@ class RobotsLayer:
             base = cell.pose_of(name)
             label_frame = (base.tobytes(), f"{name} " if prefix else "", cell.unit)
             new_frame = self._label_frames.get(name) != label_frame
+            if layer.snapshot is snapshot and not new_frame and name not in self._moved:
+                continue  # nothing of it changed (an object moved, say)
+            self._moved.discard(name)
             if layer.snapshot is None:  # before its first labels are written
                 layer.set_label_frame(base, label_frame[1], cell.unit)
             rebuilt = layer.show(snapshot)
@@ -178,6 +187,8 @@ class RobotsLayer:
         """An animation was loaded (labels show names) or dropped."""
         for layer in self.layers.values():
             layer.set_moving(moving)
+        if not moving:
+            self._moved.update(self.layers)
 
     @property
     def digits(self) -> int:
