@@ -216,6 +216,7 @@ __all__ = [
     "plot_workspace",
     "view",
     "Scene",
+    "CellScene",
     "configurator",
     "Configurator",
 ]
@@ -247,6 +248,7 @@ _LAZY = {
     "configurator": "panel",
     "Configurator": "panel",
     "Scene": "scene",
+    "CellScene": "scene",
     "view": "scene",
 }
 
