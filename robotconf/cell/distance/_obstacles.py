@@ -209,6 +209,7 @@ def capsule_obstacle_distances(
     margin: float = -np.inf,
     per_sample: bool = True,
     skip: np.ndarray | None = None,
+    known: float = np.inf,
 ) -> np.ndarray:
     """Signed distances of capsules to objects, shape (T, L, O); ``inf`` where pruned.
 
@@ -234,6 +235,9 @@ def capsule_obstacle_distances(
         (and every pair closer than ``margin``) is exact.
     skip : ndarray of bool, shape (L, O), optional
         Pairs never measured (``inf``): a robot's base links and what it stands on.
+    known : float
+        With ``per_sample`` False: a distance already measured elsewhere in the motion
+        (other pairs'), so pairs provably farther than it cannot hold the least one.
     """
     t, links = segments.shape[:2]
     count = len(obstacles)
@@ -265,7 +269,7 @@ def capsule_obstacle_distances(
         order = order[np.isfinite(coarse.ravel()[order])]
         rows, cols = _expand(order // count, order % count, links, t)
         found = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
-        limit = np.full(t, max(float(np.min(found, initial=np.inf)), margin))
+        limit = np.full(t, max(float(np.min(found, initial=known)), margin))
     # The bounds and the exact distance round differently: a bound equal to the cutoff
     # may come out a few ulps above it, so every stage allows the round-off of the scene.
     size = max(
@@ -303,6 +307,7 @@ def capsule_pair_distances(
     pairs: np.ndarray | None = None,
     margin: float = -np.inf,
     per_sample: bool = True,
+    known: float = np.inf,
 ) -> np.ndarray:
     """Signed distances between two sets of capsules per sample; ``inf`` where pruned.
 
@@ -312,14 +317,14 @@ def capsule_pair_distances(
     first_radii, second_radii : ndarray, shapes (L1,), (L2,)
     pairs : ndarray of int, shape (P, 2), optional
         Only these (i, j); the result is then (T, P), else (T, L1, L2).
-    margin, per_sample
+    margin, per_sample, known
         As for :func:`capsule_obstacle_distances`.
     """
     t = first.shape[0]
     if pairs is None:
         grid = np.indices((first.shape[1], second.shape[1])).reshape(2, -1).T
         return capsule_pair_distances(
-            first, first_radii, second, second_radii, grid, margin, per_sample
+            first, first_radii, second, second_radii, grid, margin, per_sample, known
         ).reshape(t, first.shape[1], second.shape[1])
     out = np.full((t, len(pairs)), np.inf)
     if not len(pairs) or not t:
@@ -361,7 +366,7 @@ def capsule_pair_distances(
     else:
         order = np.argsort(coarse.ravel())[:PROBES]
         sample, pair = expand(*np.divmod(order, len(pairs)))
-        limit = np.full(t, max(float(exact(sample, pair).min()), margin))
+        limit = np.full(t, max(float(exact(sample, pair).min(initial=known)), margin))
     size = max(
         float(np.abs(low1).max()),
         float(np.abs(high1).max()),
