@@ -25,6 +25,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._box import segment_box_distance
+from ._contacts import contacts_sparingly
 from ._cylinder import segment_cylinder_distance
 from ._segments import point_segment_distance, segment_segment_distance
 from ._triangle import segment_triangle_distance
@@ -116,6 +117,35 @@ class Obstacles:
             [kinds == "box", kinds == "cylinder", kinds == "sphere"],
             [box, np.maximum(axial, radial), ball - self._sphere[index]],
             ball - self.bound[index],
+        )
+        return out - r
+
+    def upper_bound(self, a: np.ndarray, b: np.ndarray, r: np.ndarray, index: np.ndarray):
+        """A cheap upper bound of each capsule's signed distance to objects ``index``, (N,).
+
+        The signed distance of one point of the segment (the one nearest the object's
+        centre) to a box, cylinder or sphere, less the radius: a part of a body is never
+        deeper in, nor farther from, a convex object than the whole. A mesh: ``inf``.
+        """
+        la, lb = self._local(a, index), self._local(b, index)
+        d = lb - la
+        length2 = np.einsum("nk,nk->n", d, d)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = np.clip(-np.einsum("nk,nk->n", la, d) / length2, 0.0, 1.0)
+        p = la + np.where(length2 > 0.0, t, 0.0)[:, None] * d
+        kinds = self.kinds[index]
+        q = np.abs(p) - 0.5 * self._box[index]
+        box = np.sqrt(np.einsum("nk,nk->n", *(2 * (np.maximum(q, 0.0),)))) + np.minimum(
+            q.max(axis=1), 0.0
+        )
+        across = np.hypot(p[:, 0], p[:, 1]) - self._cyl[index, 0]
+        along = np.abs(p[:, 2]) - 0.5 * self._cyl[index, 1]
+        cylinder = np.hypot(np.maximum(across, 0.0), np.maximum(along, 0.0)) + np.minimum(
+            np.maximum(across, along), 0.0
+        )
+        ball = np.sqrt(np.einsum("nk,nk->n", p, p)) - self._sphere[index]
+        out = np.select(
+            [kinds == "box", kinds == "cylinder", kinds == "sphere"], [box, cylinder, ball], np.inf
         )
         return out - r
 
@@ -295,7 +325,21 @@ def capsule_obstacle_distances(
     bound = obstacles.lower_bound(flat_a[rows], flat_b[rows], r[rows], cols)
     keep = bound <= sample_limit
     rows, cols = rows[keep], cols[keep]
-    out.reshape(-1, count)[rows, cols] = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
+    if per_sample or not np.isfinite(margin):
+        exact = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
+    else:
+        tolerance = 64.0 * _EPS * (1.0 + size + abs(margin))
+        exact = contacts_sparingly(
+            obstacles,
+            (flat_a[rows], flat_b[rows], r[rows]),
+            rows,
+            cols,
+            bound[keep],
+            links,
+            margin,
+            tolerance,
+        )
+    out.reshape(-1, count)[rows, cols] = exact
     return out
 
 
