@@ -4,17 +4,16 @@
 
 Exact distances (:mod:`._box`, :mod:`._cylinder`, :mod:`._triangle`, :mod:`._segments`)
 cost tens of operations per pair; most pairs of a motion are far apart. So every pair
-first gets cheap bounds from bounding balls — the capsule's ball about its midpoint
-(half its length plus its radius) and the object's ball about its centre:
-
-    lower bound  |m − c| − (ℓ/2 + r) − R_out   ≤ sd ≤   |m − c| + ℓ/2 − r − R_in   upper bound
-
-(``R_in``: a ball about the centre inside the object; for a mesh ``−R_out``). The centre
-distances of all pairs come from one matrix product. Only pairs whose lower bound does not
-exceed the cutoff are measured exactly; the others are reported as ``+inf`` ("farther
-than the cutoff"). The cutoff is a margin, or the least upper bound of each sample (every
-sample's least distance exact), or of the whole motion (only its least distance exact:
-``cell.check`` asks for contacts and the motion's least clearance, which prunes far more).
+first meets cheap lower bounds of its signed distance — a box around each link over a
+chunk of samples against a box around each object, the same per sample, then the
+separation along the object's own axes (for two capsules: along the line through their
+midpoints). Only pairs whose bound does not exceed the cutoff are measured exactly; the
+others are reported as ``+inf`` ("farther than the cutoff"). The cutoff is a margin, or
+each sample's least distance measured on its most promising pair (every sample's least
+distance exact), or the motion's: the least exact distance over a few most promising
+pairs and the pairs measured before (``known``), so only the motion's least distance is
+exact. ``cell.check`` asks for that, and of the pairs in contact only when they are and
+how deep each contact goes (:mod:`._contacts`), which prunes far more.
 """
 
 from __future__ import annotations
@@ -261,8 +260,10 @@ def capsule_obstacle_distances(
         True: each sample's cutoff is ``max(margin, d)`` with ``d`` the exact distance of
         its chunk's most promising pair, so every sample's least distance is exact.
         False: one cutoff, ``max(margin, U)`` with U the least exact distance over the
-        :data:`PROBES` most promising chunk pairs, so only the motion's least distance
-        (and every pair closer than ``margin``) is exact.
+        :data:`PROBES` most promising chunk pairs (and ``known``), so only the motion's
+        least distance is exact; of the pairs closer than ``margin``, each contact's
+        deepest sample is exact and the others may hold an upper bound below ``margin``
+        (:func:`~._contacts.contacts_sparingly`).
     skip : ndarray of bool, shape (L, O), optional
         Pairs never measured (``inf``): a robot's base links and what it stands on.
     known : float
@@ -291,9 +292,9 @@ def capsule_obstacle_distances(
         rows, cols = _expand(
             (np.arange(chunks) * links + best // count)[usable], (best % count)[usable], links, t
         )
-        known = np.full(t, np.inf)
-        known[rows // links] = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
-        limit = np.maximum(known, margin)
+        measured = np.full(t, np.inf)
+        measured[rows // links] = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
+        limit = np.maximum(measured, margin)
     else:
         order = np.argsort(coarse.ravel())[:PROBES]
         order = order[np.isfinite(coarse.ravel()[order])]
