@@ -26,6 +26,7 @@ def contacts_sparingly(
     rows: np.ndarray,
     cols: np.ndarray,
     lower: np.ndarray,
+    limit: np.ndarray,
     links: int,
     margin: float,
     tolerance: float,
@@ -41,6 +42,8 @@ def contacts_sparingly(
         ``sample·links + link`` and the object of each candidate.
     lower : ndarray, shape (N,)
         Lower bounds of their signed distances.
+    limit : ndarray, shape (N,)
+        The cutoff at their samples (with its round-off allowance): farther is ``inf``.
     links : int
     margin : float
         Closer than this is a contact.
@@ -59,6 +62,10 @@ def contacts_sparingly(
     sure = upper < margin - tolerance
     values = upper.copy()
     measure = np.flatnonzero(~sure)
+    tighter = obstacles.tighter_bound(a[measure], b[measure], r[measure], cols[measure])
+    far = tighter > limit[measure]
+    values[measure[far]] = np.inf
+    measure = measure[~far]
     values[measure] = obstacles.exact(a[measure], b[measure], r[measure], cols[measure])
     inside = np.flatnonzero(values < margin)
     if not len(inside):
@@ -78,6 +85,10 @@ def contacts_sparingly(
     values[probe] = obstacles.exact(a[probe], b[probe], r[probe], cols[probe])
     sure[probe] = False
     deepest = np.minimum.reduceat(values[inside], first)
-    redo = inside[sure[inside] & (lower[inside] <= deepest[run] + tolerance)]
+    ceiling = np.full(len(values), -np.inf)  # the depth a sample must reach to count
+    ceiling[inside] = deepest[run] + tolerance
+    redo = inside[sure[inside] & (lower[inside] <= ceiling[inside])]
+    tighter = obstacles.tighter_bound(a[redo], b[redo], r[redo], cols[redo])
+    redo = redo[tighter <= ceiling[redo]]
     values[redo] = obstacles.exact(a[redo], b[redo], r[redo], cols[redo])
     return values
