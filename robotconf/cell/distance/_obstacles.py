@@ -456,16 +456,21 @@ def capsule_pair_distances(
 def _axis_separation(first: np.ndarray, second: np.ndarray, radii: np.ndarray) -> np.ndarray:
     """A lower bound of capsule pairs' signed distances, (N,), for segments (N, 2, 3) twice.
 
-    Their separation along the line through the segments' midpoints: the capsules span
-    ``m·u ± (|d·u|/2 + r)`` there. Tighter than boxes for links side by side at a slant,
-    as a robot's wrist links are; ``−inf`` where the midpoints coincide.
+    Their separation along two axes, the larger: the line through the segments'
+    midpoints, and the common normal ``d1 × d2`` (the distance itself when the nearest
+    points lie inside both segments). Along an axis ``u`` the capsules span
+    ``m·u ± (|d·u|/2 + r)``. Tighter than boxes for links side by side at a slant, as a
+    robot's wrist links are; ``−inf`` along an axis of length 0.
     """
     d1, d2 = first[:, 1] - first[:, 0], second[:, 1] - second[:, 0]
     between = 0.5 * (second[:, 0] + second[:, 1] - first[:, 0] - first[:, 1])
-    length = np.sqrt(np.einsum("nk,nk->n", between, between))
-    with np.errstate(divide="ignore", invalid="ignore"):
-        spans = np.abs(np.einsum("nk,nk->n", d1, between)) + np.abs(
-            np.einsum("nk,nk->n", d2, between)
+
+    def along(axis: np.ndarray) -> np.ndarray:
+        length = np.sqrt(np.einsum("nk,nk->n", axis, axis))
+        gap = np.abs(np.einsum("nk,nk->n", between, axis)) - 0.5 * (
+            np.abs(np.einsum("nk,nk->n", d1, axis)) + np.abs(np.einsum("nk,nk->n", d2, axis))
         )
-        out = length - 0.5 * spans / length - radii
-    return np.where(length > 0.0, out, -np.inf)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(length > 0.0, gap / length, -np.inf)
+
+    return np.maximum(along(between), along(np.cross(d1, d2))) - radii
