@@ -216,6 +216,7 @@ __all__ = [
     "Scene",
     "configurator",
     "Configurator",
+    "cell_designer",
 ]
 
 # Kept importable under their old top-level names; not part of the notebook surface.
@@ -244,6 +245,7 @@ _ALSO_PUBLIC = (
 _LAZY = {
     "configurator": "panel",
     "Configurator": "panel",
+    "cell_designer": "cell_designer",
     "Scene": "scene",
     "view": "scene",
 }
