@@ -220,3 +220,24 @@ def test_actions_alone_need_no_widget():
         act.SetSize("sphere1", "length", 2.0).apply(state)
     with pytest.raises(rc.InvalidInputError, match="not in the cell"):
         act.SetPose("ghost", 0, 1.0).apply(state)
+
+
+def test_the_state_and_the_actions_import_no_widget_and_no_view():
+    from .test_layers import ALL_IMPORTS, WIDGET_LIBRARIES
+
+    pure = ("robotconf.cell_designer.state", "robotconf.cell_designer.actions")
+    found = [
+        (imp.source, imp.target)
+        for imp in ALL_IMPORTS
+        if imp.source.startswith(pure)
+        and (
+            imp.target.split(".")[0] in WIDGET_LIBRARIES
+            or imp.target.startswith(("robotconf.cell_designer.views", "robotconf.cell_designer._"))
+            or (
+                imp.target.startswith("robotconf.panel")
+                and not imp.target.startswith(("robotconf.panel.state", "robotconf.panel.actions"))
+            )
+        )
+    ]
+    assert found == []
+    assert any(imp.source.startswith(pure) for imp in ALL_IMPORTS)
