@@ -167,7 +167,8 @@ class Student(RuleBasedStateMachine):
         designer = self.designer
         show_tab(designer, "Programs")
         keys = designer.programs_tab.form.control_keys()
-        moves = sorted({k.split(".")[0] for k in keys if k.startswith("move[")})
+        # Labels and notes have keys like "move[0]#0.3" (their row, line and place).
+        moves = sorted({k.split(".")[0] for k in keys if k.startswith("move[") and "#" not in k})
         if what == "add" or not moves:
             adds = [k for k in keys if k.endswith(".add")]
             if adds:

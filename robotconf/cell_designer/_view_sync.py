@@ -39,7 +39,9 @@ class ViewSync:
         loaded run; ``fit``: frame everything afterwards)."""
         scene = self.scene
         if state.cell is not self.cell and state.cell != self.cell:
-            scene.show(state.cell.cell)
+            cell = state.cell.cell
+            # Each robot at its own q: the view would keep the q it last drew otherwise.
+            scene.show(cell, {name: cell.robot(name).q for name in cell.robots})
             self.cell = state.cell
             self.run = None  # a new cell drops the animation of the old one
         run = state.run if state.run is not None and not state.run.stale(state.document) else None
