@@ -15,8 +15,12 @@
    ``cell.clearance`` (robotconf's per-sample query). In the stress scene they differ
    only where coal's EPA fails on a penetrating cylinder (tests/test_cell_distance.py).
 2. ``cell.reach_map`` of 8 000 voxels (20 × 20 × 20) for the paper arm with all
-   closed-form branches, and the time of ``rc.ik_all`` alone on the same voxels (the
-   reach map calls it once per voxel). Target: ≤ 2 s.
+   closed-form branches, beside ``rc.ik_all_many`` alone on the same voxels (the map
+   takes every branch from it, in one call) and ``rc.ik_all`` one voxel at a time (the
+   map's path before), whose answers must be the same. Target: ≤ 2 s.
+3. ``cell.place`` of the UR5 over 121 base positions for three poses, beside
+   ``cell.reach`` from each base in turn (a copy of the cell moved base by base), whose
+   feasible bases must be the same.
 
 The CPU time is printed beside the wall time: on a shared machine the wall time also
 counts other processes. Run: ``PYTHONPATH=. python benchmarks/bench_cell.py``.
@@ -24,6 +28,8 @@ counts other processes. Run: ``PYTHONPATH=. python benchmarks/bench_cell.py``.
 
 from __future__ import annotations
 
+import copy
+import os
 import time
 import warnings
 
@@ -194,20 +200,72 @@ def reference_loop(cell: rc.Cell, motion):
     return time.perf_counter() - start, least
 
 
-def reach_map_timing():
+def _timed(run, repeats: int = 3):
+    """Best wall and CPU time (s) of ``run()`` over ``repeats``, and its last result."""
+    wall, cpu, result = [], [], None
+    for _ in range(repeats):
+        start, started = time.perf_counter(), time.process_time()
+        result = run()
+        wall.append(time.perf_counter() - start)
+        cpu.append(time.process_time() - started)
+    return min(wall), min(cpu), result
+
+
+def reach_map_timing() -> None:
+    """The paper arm's 8 000-voxel map against the path before it: one rc.ik_all per voxel."""
     cell = rc.Cell(unit="mm")
     cell.add_robot("arm", rc.preset("paper"), mount="table")
     cell.add(rc.Box([200, 200, 10], pose=rc.pose([0, 0, -5]), name="table"))
     cell.add(rc.Box([20, 20, 40], pose=rc.pose([40, 30, 20]), name="fixture"))
     region = [(-76, -76, -56), (76, 76, 96)]  # 20 × 20 × 20 voxels, 8 mm apart
-    start = time.perf_counter()
-    rmap = cell.reach_map("arm", region, 8)
-    total = time.perf_counter() - start
-    start = time.perf_counter()
-    for point in rmap.points:
-        rc.ik_all(cell.robot("arm"), point)
-    alone = time.perf_counter() - start
-    return total, alone, rmap
+    wall, cpu, rmap = _timed(lambda: cell.reach_map("arm", region, 8))
+    robot = cell.robot("arm")  # its base is the cell's frame: voxels are base-frame points
+    many_wall, many_cpu, sets = _timed(lambda: rc.ik_all_many(robot, rmap.points))
+    start, started = time.perf_counter(), time.process_time()
+    alone = [rc.ik_all(robot, point) for point in rmap.points]
+    one_wall, one_cpu = time.perf_counter() - start, time.process_time() - started
+    same = all(
+        one.labels == sets[k].labels and np.allclose(one.q, sets[k].q, atol=1e-9)
+        for k, one in enumerate(alone)
+    )
+    print(
+        f"cell.reach_map: {len(rmap.points)} voxels (paper arm, all branches), best of 3: "
+        f"{wall:.3f} s, CPU {cpu:.3f} s (target ≤ {MAP_TARGET_S:.0f} s); "
+        f"{int(rmap.reachable.sum())} voxels reachable"
+    )
+    print(
+        f"  rc.ik_all_many on the voxels: {many_wall:.3f} s, CPU {many_cpu:.3f} s; "
+        f"rc.ik_all one voxel at a time (the map's path before): {one_wall:.2f} s, CPU "
+        f"{one_cpu:.2f} s: {one_cpu / many_cpu:.0f}× the CPU; same branches: {same}"
+    )
+
+
+def placement_timing() -> None:
+    """cell.place over 121 bases for three poses, against cell.reach from each base."""
+    cell = work_cell()
+    down = np.diag([1.0, -1.0, -1.0])
+    targets = []
+    for point in ([0.6, 0.35, 0.25], [0.75, 0.0, 0.3], [0.0, -0.45, 0.35]):
+        target = rc.pose(point)
+        target[:3, :3] = down
+        targets.append(target)
+    region = [(-0.25, -0.25, 0.0), (0.25, 0.25, 0.0)]
+    wall, cpu, plan = _timed(lambda: cell.place("ur5", targets, region, step=0.05))
+    trial = copy.deepcopy(cell)
+    start, started = time.perf_counter(), time.process_time()
+    feasible = []
+    for position in plan.positions:
+        trial.set_pose("ur5", rc.pose(position))
+        feasible.append(trial.reach("ur5", targets).all_reachable)
+    one_wall, one_cpu = time.perf_counter() - start, time.process_time() - started
+    print(
+        f"cell.place: UR5 work cell, {len(plan.positions)} bases × {len(targets)} poses, best "
+        f"of 3: {wall:.3f} s, CPU {cpu:.3f} s ({plan.feasible.sum()} bases reach every pose)"
+    )
+    print(
+        f"  cell.reach from each base in turn: {one_wall:.3f} s, CPU {one_cpu:.3f} s: "
+        f"{one_cpu / cpu:.1f}× the CPU; same feasible bases: {feasible == plan.feasible.tolist()}"
+    )
 
 
 def check_scene(title: str, cell: rc.Cell, motion) -> None:
@@ -241,16 +299,14 @@ def check_scene(title: str, cell: rc.Cell, motion) -> None:
 
 
 def main() -> None:
+    print(f"load average at the start: {', '.join(f'{x:.2f}' for x in os.getloadavg())}")
     cell = work_cell()
     check_scene("a work cell", cell, work_motion(cell))
     cell = sweep_cell()
     check_scene("stress, sweeping through 20 objects", cell, sweep_motion(cell))
-    total, alone, rmap = reach_map_timing()
-    print(
-        f"cell.reach_map: {len(rmap.points)} voxels, all branches: {total:.2f} s "
-        f"(target ≤ {MAP_TARGET_S:.0f} s); rc.ik_all alone on the voxels: {alone:.2f} s; "
-        f"{int(rmap.reachable.sum())} voxels reachable"
-    )
+    reach_map_timing()
+    placement_timing()
+    print(f"load average at the end: {', '.join(f'{x:.2f}' for x in os.getloadavg())}")
 
 
 if __name__ == "__main__":

@@ -25,8 +25,11 @@ orientation within 1e-8 rad. Each line gives the success rate and the median and
 percentile time per solve.
 
 The batched call and the toolbox's loop are then timed side by side, interleaved, best
-of ``--repeats`` (default 5) each, and their ratio per target is printed. The goals,
-checked at the end:
+of ``--repeats`` (default 5) each, wall and CPU time, and their ratio per target is
+printed; beside them the batched call with its closed-form starts switched off (``q0``,
+then random starts only: its path before them), to show what the closed forms bring on
+these two arms (both have one: after a failed ``q0``, ``rc.ik`` starts from the
+closed-form solution nearest ``q0``). The goals, checked at the end:
 
 1. ``rc.ik`` batched succeeds at least as often as ``ets().ik_LM``;
 2. ``rc.ik`` batched takes at most the time of ``ets().ik_LM`` per target (ratio ≤ 1);
@@ -51,6 +54,7 @@ from typing import Any
 import numpy as np
 
 import robotconf as rc
+from robotconf.inverse_kinematics import _numeric as numeric_module
 from robotconf.inverse_kinematics import ik
 
 ROBOTS = ("puma560", "ur5")
@@ -181,25 +185,47 @@ def toolbox_rows(robot: rc.Robot, ets: Any, work: dict[str, np.ndarray]) -> list
     return rows
 
 
+def _no_closed_form_starts(
+    problem: Any, index: np.ndarray, first: np.ndarray, limits: bool, most: int
+) -> tuple[np.ndarray, np.ndarray]:
+    return np.zeros((len(index), 0, problem.robot.n)), np.zeros(len(index), dtype=int)
+
+
+def numeric_only(robot: rc.Robot, goals: np.ndarray) -> np.ndarray:
+    """``rc.ik`` batched with its closed-form starts switched off: ``q0``, then random
+    starts only, the path it took before them (for comparison)."""
+    kept = numeric_module.closed_form_starts
+    numeric_module.closed_form_starts = _no_closed_form_starts
+    try:
+        return ik(robot, goals, mode="pose").q
+    finally:
+        numeric_module.closed_form_starts = kept
+
+
 def side_by_side(robot: rc.Robot, ets: Any, goals: np.ndarray, repeats: int) -> dict[str, float]:
-    """The batched call and the toolbox's loop, interleaved, best of ``repeats`` each:
-    seconds per target and success, for both."""
-    batched, looped = [], []
+    """The batched call (with and without its closed-form starts) and the toolbox's loop,
+    interleaved, best of ``repeats`` each: wall and CPU seconds per target, and success."""
+    solvers = {
+        "rc": lambda: ik(robot, goals, mode="pose").q,
+        "lm": lambda: numeric_only(robot, goals),
+        "tb": lambda: np.array([toolbox_solve(ets, goal) for goal in goals]),
+    }
+    wall: dict[str, list[float]] = {key: [] for key in solvers}
+    cpu: dict[str, list[float]] = {key: [] for key in solvers}
     answers = {}
     for _ in range(repeats):
-        start = time.perf_counter()
-        answers["rc"] = ik(robot, goals, mode="pose").q
-        batched.append(time.perf_counter() - start)
-        start = time.perf_counter()
-        answers["tb"] = np.array([toolbox_solve(ets, goal) for goal in goals])
-        looped.append(time.perf_counter() - start)
+        for key, solve in solvers.items():
+            start, started = time.perf_counter(), time.process_time()
+            answers[key] = solve()
+            wall[key].append(time.perf_counter() - start)
+            cpu[key].append(time.process_time() - started)
     count = len(goals)
-    return {
-        "rc": min(batched) / count,
-        "tb": min(looped) / count,
-        "rc_ok": float(met(robot, answers["rc"], goals).mean()),
-        "tb_ok": float(met(robot, answers["tb"], goals).mean()),
-    }
+    out = {}
+    for key in solvers:
+        out[key] = min(wall[key]) / count
+        out[key + "_cpu"] = min(cpu[key]) / count
+        out[key + "_ok"] = float(met(robot, answers[key], goals).mean())
+    return out
 
 
 def ikpy_chain(robot: rc.Robot) -> tuple[Any, np.ndarray] | None:
@@ -250,6 +276,7 @@ def main() -> None:
     arguments = parser.parse_args()
     count = arguments.count
     print(f"numeric IK, mode='pose', {count} random reachable targets per robot, rc.ik defaults")
+    print(f"load average at the start: {', '.join(f'{x:.2f}' for x in os.getloadavg())}")
     print(
         f"answers judged by robotconf FK: position ≤ {POSITION_CHECK:g}·L, angle ≤ {ANGLE_CHECK:g}"
     )
@@ -282,11 +309,20 @@ def main() -> None:
             print(row.line())
         if ets is not None:
             timing = side_by_side(robot, ets, work["cold"], arguments.repeats)
+            print(f"    side by side, interleaved, best of {arguments.repeats} (wall, CPU):")
+            for key, label in (
+                ("rc", "rc.ik batched"),
+                ("lm", "rc.ik batched, no closed-form starts"),
+                ("tb", "ets().ik_LM loop"),
+            ):
+                print(
+                    f"      {label:38s} {timing[key] * 1e3:7.3f} ms/target, CPU "
+                    f"{timing[key + '_cpu'] * 1e3:7.3f} ms/target ({timing[key + '_ok']:.1%} met)"
+                )
             print(
-                f"    side by side, best of {arguments.repeats}: rc.ik batched "
-                f"{timing['rc'] * 1e3:.3f} ms/target ({timing['rc_ok']:.1%} met), "
-                f"ets().ik_LM {timing['tb'] * 1e3:.3f} ms/target ({timing['tb_ok']:.1%} met): "
-                f"ratio {timing['rc'] / timing['tb']:.2f}"
+                f"      ratio to ets().ik_LM: rc.ik {timing['rc'] / timing['tb']:.2f} "
+                f"(CPU {timing['rc_cpu'] / timing['tb_cpu']:.2f}); without closed-form starts "
+                f"{timing['lm'] / timing['tb']:.2f} (CPU {timing['lm_cpu'] / timing['tb_cpu']:.2f})"
             )
         verdicts += check_goals(name, rows, timing)
     if toolbox_model(rc.preset("ur5")) is None:
@@ -296,6 +332,7 @@ def main() -> None:
         )
     if ikpy_chain(rc.preset("ur5")) is None:
         print("ikpy is not importable: skipped ikpy (pip install -e .[bench])")
+    print(f"load average at the end: {', '.join(f'{x:.2f}' for x in os.getloadavg())}")
     print("goals:")
     for verdict in verdicts:
         print("  " + verdict)
@@ -318,8 +355,8 @@ def check_goals(name: str, rows: list[Row], timing: dict[str, float] | None) -> 
         ratio = timing["rc"] / timing["tb"]
         out.append(
             f"{name}: batched {timing['rc'] * 1e3:.3f} vs ets().ik_LM {timing['tb'] * 1e3:.3f} "
-            f"ms/target, ratio {ratio:.2f} ≤ {RATIO_GOAL:g}: "
-            + ("met" if ratio <= RATIO_GOAL else "MISSED")
+            f"ms/target, ratio {ratio:.2f} (CPU {timing['rc_cpu'] / timing['tb_cpu']:.2f}) "
+            f"≤ {RATIO_GOAL:g}: " + ("met" if ratio <= RATIO_GOAL else "MISSED")
         )
     return out
 

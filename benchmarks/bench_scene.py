@@ -15,6 +15,12 @@ References in the same process, so the ratios hold on a loaded machine: ``robot.
 (one kernel pass, the least a picture of the robot needs) for the q step, and the
 motion's batch of frame poses (``robot.frame_poses(motion.q)``) for the animation.
 
+The same robot in a work cell (``rc.view(cell)``, a :class:`CellScene`) with 20 boxes and
+5 frames, through the recording fake: a q step (``show(cell, {"arm": q})``), a designer's
+step (one box moved, ``show(cell)``), both against ``robot.at(q)``; and loading a run of
+the same length (``animate(cell_run)``: the robot, its capsules, its contacts) against the
+robot's own scene loading the run's motion.
+
 Run: ``python benchmarks/bench_scene.py``. Pointed at an older checkout of the package
 (``PYTHONPATH=old/ python benchmarks/bench_scene.py``), the rows its scene lacks are left
 out, so before and after print side by side with the same references.
@@ -32,6 +38,8 @@ import numpy as np
 
 import robotconf as rc
 from robotconf.scene import RecordingChannel, Scene
+
+CellScene = getattr(rc, "CellScene", None)  # an older checkout has none
 
 
 def six_modules() -> rc.Robot:
@@ -100,9 +108,51 @@ def main() -> None:
         ("scene.animate, widget + JSON", percentiles(widget.animate, repeats, warm=2), poses[0])
     )
 
+    if CellScene is not None:
+        rows += cell_rows(robot, qs, motion.t[-1], step[0])
+
     print(f"{'case':44s} {'p50 ms':>8s} {'p95 ms':>8s} {'× ref':>7s}")
     for name, (p50, p95), base in rows:
         print(f"{name:44s} {p50:8.3f} {p95:8.3f} {p50 / base:7.2f}")
+
+
+def cell_rows(
+    robot: rc.Robot, qs: np.ndarray, t_end: float, step: float
+) -> list[tuple[str, tuple[float, float], float]]:
+    """The robot in a cell of 20 boxes and 5 frames: a q step, a box moved, a run loaded."""
+    rng = np.random.default_rng(1)
+    cell = rc.Cell(unit="mm")
+    cell.add_robot("arm", robot)
+    for k in range(20):
+        cell.add(rc.Box([4, 4, 4], pose=rc.pose(rng.uniform(-40, 40, 3)), name=f"box{k}"))
+    for k in range(5):
+        cell.add_frame(f"frame{k}", rc.pose(rng.uniform(-40, 40, 3)))
+    scene = CellScene(cell, channel=RecordingChannel())
+    rows = [
+        (
+            "cell: show(cell, {arm: q}), recording fake",
+            percentiles(lambda q: scene.show(cell, {"arm": q}), list(qs)),
+            step,
+        )
+    ]
+
+    def move(k: int) -> None:
+        cell.set_pose("box3", rc.pose([0.01 * k, 0.0, 0.0]))
+        scene.show(cell)
+
+    rows.append(("cell: a box moved, show(cell)", percentiles(move, list(range(300))), step))
+    moves = [rc.PTP(q=q) for q in rng.uniform(-1, 1, (8, robot.n))]
+    program = rc.Program(robot, moves)
+    dt = float(t_end) / 2000 if os.environ.get("ROBOTCONF_FAST") else program.duration / 10_000
+    run = cell.run({"arm": program}, dt=dt)
+    plain = Scene(robot, channel=RecordingChannel())
+    loads = [run.motions["arm"]] * 8
+    reference = percentiles(plain.animate, loads, warm=2)
+    samples = len(run.motions["arm"].t)
+    rows.append((f"reference: Scene.animate, {samples} samples", reference, reference[0]))
+    runs = [run] * 8
+    rows.append(("cell: animate(cell_run)", percentiles(scene.animate, runs, warm=2), reference[0]))
+    return rows
 
 
 if __name__ == "__main__":

@@ -28,7 +28,7 @@ from ._errors import InvalidInputError
 from ._validation import check_finite_number, check_joint_values, check_vector3
 from .calibration import Calibration, FrameFit, calibrate, locate_frame
 from .cell import Box, Cell, Cylinder, Mesh, Sphere, Tool, pose
-from .inverse_kinematics import IKResult, IKSolutions, ik, ik_all
+from .inverse_kinematics import IKResult, IKSolutions, IKSolutionSets, ik, ik_all, ik_all_many
 from .io import Setup, load, load_cell, load_program, load_setup, to_urdf
 from .kinematics import (
     DH_CONVENTIONS,
@@ -173,8 +173,10 @@ __all__ = [
     # inverse kinematics
     "ik",
     "ik_all",
+    "ik_all_many",
     "IKResult",
     "IKSolutions",
+    "IKSolutionSets",
     # calibration
     "locate_frame",
     "FrameFit",
@@ -214,6 +216,7 @@ __all__ = [
     "plot_workspace",
     "view",
     "Scene",
+    "CellScene",
     "configurator",
     "Configurator",
     "cell_designer",
@@ -247,6 +250,7 @@ _LAZY = {
     "Configurator": "panel",
     "cell_designer": "cell_designer",
     "Scene": "scene",
+    "CellScene": "scene",
     "view": "scene",
 }
 

@@ -113,3 +113,65 @@ def test_reach_map_matches_reach_at_every_voxel():
     with pytest.raises(rc.InvalidInputError) as caught:
         cell.reach_map("arm", [(-1e6, -1e6, 0), (1e6, 1e6, 1e6)], 1)
     assert caught.value.field == "step"
+
+
+def _ur_cell(base=None):
+    cell = rc.Cell(unit="m")
+    tool = rc.Tool(tcp=rc.pose([0, 0, 0.12]), name="gripper")
+    cell.add_robot("ur", rc.preset("ur5"), base=base, tool=tool, mount="table")
+    cell.add(rc.Box([2, 2, 0.04], pose=rc.pose([0, 0, -0.02]), name="table"))
+    cell.add(rc.Box([0.1, 0.1, 0.3], pose=rc.pose([0.4, 0.1, 0.15]), name="post"))
+    # On the base, so it moves with it: the arm must keep clear of it wherever it stands.
+    cell.add(rc.Sphere(0.05, pose=rc.pose([-0.2, 0.0, 0.05]), name="controller"), parent="ur")
+    return cell
+
+
+def test_place_agrees_with_reach_from_each_base_for_a_six_joint_arm():
+    down = np.diag([1.0, -1.0, -1.0])
+    targets = [rc.pose(p) for p in ([0.5, 0.2, 0.2], [0.3, -0.4, 0.1], [0.6, 0.0, 0.4])]
+    for target in targets:
+        target[:3, :3] = down
+    cell = _ur_cell(base=rc.pose([0.0, 0.0, 0.0], [0, 0, 0.4]))
+    before = {name: cell.pose_of(name) for name in cell.entries}
+    plan = cell.place("ur", targets, [(-0.3, -0.3, 0), (0.3, 0.3, 0)], step=0.15, margin=0.01)
+    assert {name: cell.pose_of(name).tolist() for name in cell.entries} == {
+        name: pose.tolist() for name, pose in before.items()
+    }  # the cell itself is left where it was
+    assert 0 < plan.feasible.sum() < len(plan.positions)
+    for b, position in enumerate(plan.positions):
+        trial = _ur_cell(base=rc.pose(position, [0, 0, 0.4]))
+        alone = trial.reach("ur", targets, margin=0.01)
+        assert plan.reached[b] == alone.reachable.sum()
+        assert plan.feasible[b] == alone.all_reachable
+        if alone.all_reachable:
+            assert plan.margin[b] == pytest.approx(np.min(alone.clearance), abs=1e-12)
+            assert plan.manipulability[b] == pytest.approx(np.min(alone.manipulability), rel=1e-12)
+
+
+def test_mirror_branches_of_equal_manipulability_give_the_first():
+    # The paper arm's elbow up and down mirror each other about the line from the
+    # shoulder to the target: the same |sin q3|, so the same manipulability.
+    cell = rc.Cell()
+    cell.add_robot("arm", rc.preset("paper"))
+    points = np.random.default_rng(8).uniform([-60, -60, 0], [60, 60, 60], (40, 3))
+    result = cell.reach("arm", points)
+    ties = 0
+    for k in np.flatnonzero(result.reachable):
+        sols = rc.ik_all(cell.robot("arm"), points[k])
+        usable = sols.q[sols.within_limits]  # nothing else in the cell to hit
+        ties += len(usable) > 1
+        assert np.allclose(result.q[k], usable[0], atol=1e-12)
+    assert ties > 10
+
+
+def test_points_and_poses_together():
+    cell = rc.Cell()
+    scara = rc.preset("scara")
+    cell.add_robot("scara", scara)
+    pose = scara.end_effector_pose([0.3, -0.5, 4.0, 0.2])
+    point = scara.end_effector([1.0, 0.4, 6.0, 0.0])
+    both = cell.reach("scara", [point, pose, pose[:3, 3]])
+    for k, target in enumerate([point, pose, pose[:3, 3]]):
+        alone = cell.reach("scara", [target])
+        assert both.branches[k] == alone.branches[0] and both.labels[k] == alone.labels[0]
+        assert np.allclose(both.q[k], alone.q[0], equal_nan=True)

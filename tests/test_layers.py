@@ -56,6 +56,7 @@ LAZY_ACCESSORS = {
     "robotconf.cell._cell:save": "robotconf.io",
     "robotconf.kinematics._workspace:plot": "robotconf.plots",
     "robotconf.kinematics._workspace:view": "robotconf.scene",
+    "robotconf.cell._cell:view": "robotconf.scene",
     "robotconf.motion._motion:plot": "robotconf.plots",
 }
 

@@ -399,6 +399,28 @@ class Cell:
 
         return run(self, programs, dt=dt, margin=margin)
 
+    # -- the 3D view ---------------------------------------------------------------------
+
+    def view(self, qs: Any = None, *, display: bool = True, **options: Any) -> Any:
+        """Show the cell in the notebook's 3D pane: ``rc.view(cell, qs)``.
+
+        Parameters
+        ----------
+        qs : dict, optional
+            ``{robot name: q}``; robots left out stand at their own ``q``.
+        display : bool
+            Show the pane now.
+        **options
+            :class:`~robotconf.scene.CellScene`'s options (``height``, ``labels``, …).
+
+        Returns
+        -------
+        CellScene
+        """
+        from ..scene import view
+
+        return view(self, qs, display=display, **options)
+
     # -- files -------------------------------------------------------------------------
 
     def to_json(self, path: str | os.PathLike[str] | None = None, indent: int | None = 2) -> str:

@@ -1,11 +1,13 @@
 """``cell.reach``: can a robot reach each target, with how many branches, and why not.
 
 For every target (a cell frame, a point or a pose of the TCP in the cell's frame) the
-closed forms ``rc.ik_all`` list every branch in the robot's base frame; a branch counts
-when it lies within the joint limits (``IKSolutions.within_limits``) and its clearance
-(``cell.clearance``, all branches of all targets in one call) is at least ``margin``.
+closed forms list every branch in the robot's base frame (``rc.ik_all_many``, all
+targets in one vectorized call); a branch counts when it lies within the joint limits
+(``within_limits``) and its clearance (``cell.clearance``, all branches of all targets in
+one call) is at least ``margin``.
 The best branch has the largest manipulability, Yoshikawa's ``√det(J Jᵀ)`` of the
-steered rows of the TCP's Jacobian (the linear rows for a point, all six for a pose).
+steered rows of the TCP's Jacobian (the linear rows for a point, all six for a pose);
+of branches within 1e-9 of it (mirror images often tie) the first.
 
 A 6-joint arm (spherical wrist, UR) needs poses; the 3R elbow arm and planar 2R reach
 points, and a pose's orientation is left aside for them.
@@ -13,28 +15,43 @@ points, and a pose's orientation is left aside for them.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import as_float_array, check_finite_number, one_line
-from ..inverse_kinematics import ik_all, recognize
+from ..inverse_kinematics import IKSolutionSets, ik_all, ik_all_many, recognize
 from ._answers import Reach, format_length
-from ._entries import RobotEntry, planning_robot, target_in_base
+from ._entries import RobotEntry, planning_robot
 from ._limits import MAX_TARGETS
 from ._pose import check_pose
 
 if TYPE_CHECKING:
     from ._cell import Cell
 
-__all__ = ["reach", "evaluate_targets", "read_targets", "POSE_FAMILIES", "POINT_FAMILIES"]
+__all__ = [
+    "reach",
+    "evaluate_targets",
+    "read_targets",
+    "solve_targets",
+    "targets_in_base",
+    "branch_clearances",
+    "summarize",
+    "Summary",
+    "POSE_FAMILIES",
+    "POINT_FAMILIES",
+]
 
 #: Families whose closed forms need a pose target.
 POSE_FAMILIES = ("spherical-wrist 6R", "UR")
 
 #: Families that reach points only (a pose gives its point).
 POINT_FAMILIES = ("3R elbow", "planar 2R")
+
+#: Manipulabilities within this fraction of the largest count as equal (the first
+#: branch of equals is the best).
+TIE = 1e-9
 
 _TARGETS = "a frame name, a point (3,), a pose (4, 4), or a list of them"
 
@@ -82,28 +99,85 @@ def read_targets(cell: Cell, targets: Any) -> tuple[list[str], np.ndarray, np.nd
     return labels, np.array(poses), np.array(is_pose, dtype=bool)
 
 
+def targets_in_base(entry: RobotEntry, base_world: np.ndarray, poses: np.ndarray) -> np.ndarray:
+    """:func:`~robotconf.cell._entries.target_in_base` for poses (K, 4, 4) at once, seen
+    from one base (4, 4) or from each of B bases (B, 4, 4): (K, 4, 4) or (B·K, 4, 4),
+    base slowest."""
+    turn = np.swapaxes(base_world[..., :3, :3], -1, -2)
+    inverse = np.zeros(base_world.shape)
+    inverse[..., :3, :3] = turn
+    inverse[..., :3, 3] = -(turn @ base_world[..., :3, 3, np.newaxis])[..., 0]
+    inverse[..., 3, 3] = 1.0
+    local = (inverse[..., np.newaxis, :, :] @ poses).reshape(-1, 4, 4)
+    if entry.tool is not None:
+        local[:, :3, :3] = local[:, :3, :3] @ entry.tool.tcp[:3, :3].T
+    return local
+
+
+def _solve_kinds(robot: Any, local: np.ndarray, wants_pose: np.ndarray) -> IKSolutionSets:
+    """``rc.ik_all_many`` of poses where ``wants_pose``, of their points elsewhere."""
+    if wants_pose.all() or not wants_pose.any():
+        return ik_all_many(robot, local if wants_pose.all() else local[:, :3, 3])
+    poses, points = np.flatnonzero(wants_pose), np.flatnonzero(~wants_pose)
+    parts = [
+        (poses, ik_all_many(robot, local[poses])),
+        (points, ik_all_many(robot, local[points, :3, 3])),
+    ]
+    target = np.concatenate([index[sets.target] for index, sets in parts])
+    order = np.argsort(target, kind="stable")
+    reasons = [""] * len(local)
+    for index, sets in parts:
+        for k, text in zip(index.tolist(), sets.reasons, strict=True):
+            reasons[k] = text
+    labels = np.array([label for _, sets in parts for label in sets.labels], dtype=object)
+    return IKSolutionSets(
+        q=np.concatenate([sets.q for _, sets in parts])[order],
+        labels=tuple(labels[order].tolist()),
+        within_limits=np.concatenate([sets.within_limits for _, sets in parts])[order],
+        target=target[order],
+        counts=np.bincount(target, minlength=len(local)),
+        reasons=tuple(reasons),
+        family=parts[0][1].family,
+    )
+
+
+def _within_targets(error: InvalidInputError, count: int) -> InvalidInputError:
+    """A batch's error about ``targets[i]`` (of ``count`` targets, repeated per base)
+    named as the cell's target, as a one-target call's error reads there."""
+    if not error.field.startswith("targets["):
+        return error
+    i = int(error.field[len("targets[") : error.field.index("]")]) % count
+    return InvalidInputError(f"targets[{i}].target", error.value, error.allowed, error.problem)
+
+
 def solve_targets(
     entry: RobotEntry, base_world: np.ndarray, poses: np.ndarray, is_pose: np.ndarray
-):
-    """``rc.ik_all`` of every target in the robot's base frame: a list of IKSolutions."""
+) -> tuple[Any, str | None, IKSolutionSets]:
+    """Every closed-form branch of every target (poses (K, 4, 4) in the cell's frame) in
+    the robot's base frame, in one vectorized call (``rc.ik_all_many``); ``base_world``
+    (B, 4, 4) solves them from B bases at once (target ``b·K + k`` of the answer)."""
     robot = planning_robot(entry)
     family = recognize(robot)
-    solutions = []
-    for k in range(len(poses)):
-        local = target_in_base(entry, base_world, poses[k])
-        if family in POSE_FAMILIES and not is_pose[k]:
-            raise InvalidInputError(
-                f"targets[{k}]",
-                one_line(poses[k][:3, 3]),
-                f"a pose or a frame for a {family} arm",
-                problem="a point leaves the orientation open:",
-            )
-        wants_pose = is_pose[k] and family not in POINT_FAMILIES
-        try:
-            solutions.append(ik_all(robot, local if wants_pose else local[:3, 3]))
+    local = targets_in_base(entry, base_world, poses)
+    if family is None:
+        try:  # the one-target call says why there is no closed form
+            ik_all(robot, local[0])
         except InvalidInputError as error:
-            raise error.within(f"targets[{k}]") from None
-    return robot, family, solutions
+            raise error.within("targets[0]") from None
+    if family in POSE_FAMILIES and not is_pose.all():
+        k = int(np.flatnonzero(~is_pose)[0])
+        raise InvalidInputError(
+            f"targets[{k}]",
+            one_line(poses[k][:3, 3]),
+            f"a pose or a frame for a {family} arm",
+            problem="a point leaves the orientation open:",
+        )
+    wants_pose = np.tile(is_pose & (family not in POINT_FAMILIES), len(local) // len(poses))
+    try:
+        sets = _solve_kinds(robot, local, wants_pose)
+    except InvalidInputError as error:
+        raise _within_targets(error, len(poses)) from None
+    return robot, family, sets
 
 
 def _manipulability(robot: Any, q: np.ndarray, full: np.ndarray) -> np.ndarray:
@@ -116,17 +190,22 @@ def _manipulability(robot: Any, q: np.ndarray, full: np.ndarray) -> np.ndarray:
 
 
 def _why_not(
-    k: int, sols: Any, ok_limits: np.ndarray, gaps: np.ndarray, hits: list[str], unit: str | None
+    reason: str,
+    labels: tuple[str, ...],
+    ok_limits: np.ndarray,
+    gaps: np.ndarray,
+    hits: list[str],
+    unit: str | None,
 ) -> str:
-    if len(sols) == 0:
-        return sols.reason or "no closed-form solution"
+    if len(labels) == 0:
+        return reason or "no closed-form solution"
     if not ok_limits.any():
-        return f"every branch leaves the joint limits ({', '.join(sols.labels)})"
+        return f"every branch leaves the joint limits ({', '.join(labels)})"
     parts = [
         f"the {label}, which hits {other} ({format_length(-gap, unit)} deep)"
         if gap < 0
         else f"the {label}, which comes within {format_length(gap, unit)} of {other}"
-        for label, gap, other, ok in zip(sols.labels, gaps, hits, ok_limits, strict=True)
+        for label, gap, other, ok in zip(labels, gaps, hits, ok_limits, strict=True)
         if ok
     ]
     return "only with " + " and ".join(parts)
@@ -168,6 +247,64 @@ def reach(cell: Cell, robot: Any, targets: Any, *, margin: Any = 0.0) -> Reach:
     )
 
 
+def branch_clearances(cell: Cell, name: str, q: np.ndarray, within: np.ndarray):
+    """Each branch's clearance (``inf`` outside the limits, not measured) and what it is
+    nearest, one ``cell.clearance`` call for all the branches within the limits."""
+    gaps = np.full(len(q), np.inf)
+    hits = [""] * len(q)
+    if within.any():
+        found = cell.clearance(name, q[within])
+        gaps[within] = found.distance
+        for i, other in zip(np.flatnonzero(within).tolist(), found.other, strict=True):
+            hits[i] = f"'{other}'"
+    return gaps, hits
+
+
+class Summary(NamedTuple):
+    """Per target (K,): usable branches and the best one; per branch (R,): usable."""
+
+    free: np.ndarray
+    collision_free: np.ndarray
+    manipulability: np.ndarray
+    q: np.ndarray
+    clearance: np.ndarray
+
+
+def summarize(
+    plan: Any,
+    family: str | None,
+    sets: IKSolutionSets,
+    is_pose: np.ndarray,
+    gaps: np.ndarray,
+    margin: float,
+) -> Summary:
+    """Which branches count (within the limits, clearance ≥ ``margin``) and each target's
+    best: the largest manipulability (the first branch within :data:`TIE` of it), and
+    the target's largest clearance."""
+    rows, owner, size = sets.q, sets.target, len(sets)
+    free = sets.within_limits & (gaps >= margin)
+    manip = np.full(len(rows), np.nan)
+    full = is_pose[owner] & (family not in POINT_FAMILIES)
+    manip[free] = _manipulability(plan, rows[free], full[free])
+    best_q = np.full((size, plan.n), np.nan)
+    best_m = np.full(size, np.nan)
+    best_gap = np.full(size, np.nan)
+    usable = np.flatnonzero(free)
+    if usable.size:
+        most = np.full(size, -np.inf)
+        np.maximum.at(most, owner[usable], manip[usable])
+        # Mirror branches (elbow up and down) often have the same manipulability: the
+        # first branch within round-off of the largest wins, not the round-off.
+        close = usable[manip[usable] >= most[owner[usable]] * (1.0 - TIE)]
+        first = close[np.r_[True, owner[close][1:] != owner[close][:-1]]]
+        best_q[owner[first]], best_m[owner[first]] = rows[first], manip[first]
+        widest = np.full(size, -np.inf)
+        np.maximum.at(widest, owner[usable], gaps[usable])
+        best_gap[owner[first]] = widest[owner[first]]
+    counted = np.bincount(owner, free, size).astype(int) if len(owner) else np.zeros(size, int)
+    return Summary(free, counted, best_m, best_q, best_gap)
+
+
 def evaluate_targets(
     cell: Cell,
     entry: RobotEntry,
@@ -178,59 +315,35 @@ def evaluate_targets(
 ) -> Reach:
     """:func:`reach` for targets already read (poses in the cell's frame)."""
     base_world = cell.pose_of(entry.name)
-    plan, family, solutions = solve_targets(entry, base_world, poses, is_pose)
-    counts = np.array([len(s) for s in solutions])
-    rows = np.concatenate([s.q for s in solutions]) if counts.sum() else np.zeros((0, plan.n))
-    owner = np.repeat(np.arange(len(solutions)), counts)
-    within = (
-        np.concatenate([s.within_limits for s in solutions]) if counts.sum() else np.zeros(0, bool)
-    )
-    gaps = np.full(len(rows), np.inf)
-    hits = [""] * len(rows)
-    if within.any():
-        found = cell.clearance(entry.name, rows[within])
-        gaps[within] = found.distance
-        for i, other in zip(np.flatnonzero(within), found.other, strict=True):
-            hits[i] = f"'{other}'"
-    free = within & (gaps >= margin)
-    manip = np.full(len(rows), np.nan)
-    full = is_pose[owner] & (family not in POINT_FAMILIES)
-    manip[free] = _manipulability(plan, rows[free], full[free])
-    size = len(solutions)
-    best_q = np.full((size, plan.n), np.nan)
-    best_m = np.full(size, np.nan)
-    best_gap = np.full(size, np.nan)
+    plan, family, sets = solve_targets(entry, base_world, poses, is_pose)
+    gaps, hits = branch_clearances(cell, entry.name, sets.q, sets.within_limits)
+    best = summarize(plan, family, sets, is_pose, gaps, margin)
+    size, owner = len(sets), sets.target
+    starts = np.concatenate([[0], np.cumsum(sets.counts)]).tolist()
     reasons, names = [], []
-    for k, sols in enumerate(solutions):
-        mine = owner == k
-        ok = free[mine]
-        names.append(tuple(label for label, good in zip(sols.labels, ok, strict=True) if good))
-        if ok.any():
-            pick = np.flatnonzero(mine)[np.nanargmax(np.where(ok, manip[mine], -np.inf))]
-            best_q[k], best_m[k] = rows[pick], manip[pick]
-            best_gap[k] = np.max(gaps[mine][ok])
+    for k in range(size):
+        mine = slice(starts[k], starts[k + 1])
+        ok = best.free[mine]
+        branch = sets.labels[mine]
+        names.append(tuple(label for label, good in zip(branch, ok.tolist(), strict=True) if good))
+        if best.collision_free[k]:
             reasons.append("")
-        else:
-            reasons.append(
-                _why_not(
-                    k,
-                    sols,
-                    within[mine],
-                    gaps[mine],
-                    [hits[i] for i in np.flatnonzero(mine)],
-                    cell.unit,
-                )
+            continue
+        reasons.append(
+            _why_not(
+                sets.reasons[k], branch, sets.within_limits[mine], gaps[mine], hits[mine], cell.unit
             )
-    count = np.bincount
+        )
+    within = sets.within_limits
     return Reach(
         tuple(labels),
-        np.array([r == "" for r in reasons]),
-        counts,
-        count(owner, within, size).astype(int) if len(owner) else np.zeros(size, int),
-        count(owner, free, size).astype(int) if len(owner) else np.zeros(size, int),
-        best_m,
-        best_q,
-        best_gap,
+        best.collision_free > 0,
+        sets.counts.copy(),
+        np.bincount(owner, within, size).astype(int) if len(owner) else np.zeros(size, int),
+        best.collision_free,
+        best.manipulability,
+        best.q,
+        best.clearance,
         tuple(names),
         tuple(reasons),
     )

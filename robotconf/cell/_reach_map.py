@@ -7,8 +7,10 @@ kept) and asks whether every target is reachable from each; the best base has th
 largest least clearance over the targets (each target taking its best branch), ties going
 to the larger least manipulability.
 
-Time: ``rc.ik_all`` runs once per voxel (or per base and target); everything after it —
-joint limits, the clearance of every branch, manipulability — is one vectorized pass.
+Time: every branch of every voxel (or of every base and target) comes from one
+vectorized ``rc.ik_all_many`` call, and the joint limits, the clearance of every branch
+and the manipulability are one vectorized pass over them (the clearance one call per
+base tried, since the robot moves against the rest of the cell).
 """
 
 from __future__ import annotations
@@ -25,7 +27,7 @@ from ._answers import Placement, ReachMap
 from ._entries import planning_robot
 from ._limits import MAX_BASES, MAX_VOXELS
 from ._pose import check_pose
-from ._reach import POSE_FAMILIES, evaluate_targets, read_targets
+from ._reach import POSE_FAMILIES, evaluate_targets, read_targets, solve_targets, summarize
 
 if TYPE_CHECKING:
     from ._cell import Cell
@@ -158,33 +160,46 @@ def place(
         )
         step = max(float(sides.max()) / 10.0, 1e-9) if sides.max() > 0 else 1.0
     positions, shape = grid_points(region, step, MAX_BASES // max(len(labels), 1))
-    trial = copy.deepcopy(cell)
     base = cell.pose_of(entry.name)
     parent = cell.parent_of(entry.name)
     up = np.linalg.inv(cell.pose_of(parent)) if parent is not None else np.eye(4)
-    count = len(positions)
-    feasible = np.zeros(count, dtype=bool)
-    reached = np.zeros(count, dtype=int)
-    gaps = np.full(count, np.nan)
-    manip = np.full(count, np.nan)
-    for b, position in enumerate(positions):
-        world = base.copy()
-        world[:3, 3] = position
-        trial.set_pose(entry.name, up @ world)
-        result = evaluate_targets(
-            trial, trial.robot_entry(entry.name), labels, poses, is_pose, limit
-        )
-        reached[b] = int(result.reachable.sum())
-        if result.all_reachable:
-            feasible[b] = True
-            gaps[b] = float(np.min(result.clearance))
-            manip[b] = float(np.min(result.manipulability))
+    count, size = len(positions), len(labels)
+    worlds = np.broadcast_to(base, (count, 4, 4)).copy()  # the base keeps its orientation
+    worlds[:, :3, 3] = positions
+    plan, family, sets = solve_targets(entry, worlds, poses, is_pose)
+    gaps = np.full(len(sets.q), np.inf)
+    trial = _trial_cell(cell, entry.name)
+    at_base = sets.target // size
+    for b in np.unique(at_base[sets.within_limits]).tolist():
+        rows = np.flatnonzero((at_base == b) & sets.within_limits)
+        trial.set_pose(entry.name, up @ worlds[b])
+        gaps[rows] = trial.clearance(entry.name, sets.q[rows]).distance
+    found = summarize(plan, family, sets, np.tile(is_pose, count), gaps, limit)
+    reached = (found.collision_free > 0).reshape(count, size).sum(axis=1)
+    feasible = reached == size
+    # Every target of a feasible base has its best branch: the least over them.
+    margin_at = np.where(feasible, found.clearance.reshape(count, size).min(axis=1), np.nan)
+    manip = np.where(feasible, found.manipulability.reshape(count, size).min(axis=1), np.nan)
     best = None
     if feasible.any():
-        order = np.lexsort((np.where(feasible, -manip, np.inf), np.where(feasible, -gaps, np.inf)))
+        order = np.lexsort(
+            (np.where(feasible, -manip, np.inf), np.where(feasible, -margin_at, np.inf))
+        )
         best = int(order[0])
     best_pose = None
     if best is not None:
         best_pose = base.copy()
         best_pose[:3, 3] = positions[best]
-    return Placement(positions, shape, feasible, reached, gaps, manip, best, best_pose, cell.unit)
+    return Placement(
+        positions, shape, feasible, reached, margin_at, manip, best, best_pose, cell.unit
+    )
+
+
+def _trial_cell(cell: Cell, name: str) -> Cell:
+    """A cell that shares every entry with ``cell`` but its own copy of robot ``name``'s
+    (whose base :meth:`Cell.set_pose` then moves): no deep copy of shapes and meshes."""
+    trial = copy.copy(cell)
+    trial._entries = dict(cell._entries)
+    trial._entries[name] = copy.copy(cell._entries[name])
+    trial._cache = {}
+    return trial

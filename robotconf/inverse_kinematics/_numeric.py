@@ -1,8 +1,9 @@
 """The numeric inverse-kinematics solver: starts, retries and an honest reason for each.
 
 :func:`ik` validates, then runs the batched damped least squares of
-:mod:`._lm` from up to ``seeds`` starts per target — ``q0`` first, then the
-same random configurations for every target — and keeps the first converged run (or the
+:mod:`._lm` from up to ``seeds`` starts per target — ``q0`` first, then (an arm with a
+closed form) the closed-form solutions nearest ``q0`` (:mod:`.batch`), then the same
+random configurations for every target — and keeps the first converged run (or the
 closest one). Each start runs within the joint ranges; where all of them fail and some
 joint is clipped (not a full-turn revolute), the starts run again without the ranges, and
 a solution whose revolute joints fit the ranges after whole turns counts as converged
@@ -49,6 +50,7 @@ from ._result import IKResult, single_or_batch
 from ._search import WAVE_RUNS, Search, search
 from ._structure import cached_rank, rank, warn_if_overconstrained
 from ._targets import check_mask, check_mode, check_options, check_start, check_targets
+from .batch import closed_form_starts
 
 __all__ = ["ik", "ik_bytes"]
 
@@ -122,11 +124,14 @@ def ik(
     max_iterations : int
         Most steps per run (a start within the ranges, or without them), 1 … 10 000.
     seeds : int
-        Starts per target, 1 … 64: ``q0``, then ``seeds − 1`` random configurations
-        within the ranges from ``numpy.random.default_rng(seed)``, the same for every
-        target (so a target gets the same answer alone or among others). A target proved
-        out of reach gets ``q0`` only; a solved one stops at its first success.
-        Failed starts cost time only for the targets that need them.
+        Starts per target, 1 … 64: ``q0``, then, on an arm with a closed form
+        (:func:`~robotconf.inverse_kinematics.recognize`), the closed-form solutions of
+        the target within the ranges, nearest ``q0`` first (they are solutions already),
+        then random configurations within the ranges from
+        ``numpy.random.default_rng(seed)``, the same for every target (so a target gets
+        the same answer alone or among others): ``seeds`` in all. A target proved out of
+        reach gets ``q0`` only; a solved one stops at its first success. Failed starts
+        cost time only for the targets that need them.
     seed : int
         Seed of those random starts (≥ 0).
     respect_limits : bool
@@ -195,7 +200,15 @@ def ik(
     draws = problem.lower + (problem.upper - problem.lower) * rng.random(
         (options.seeds - 1, robot.n)
     )
-    found = search(problem, first, draws, proved, options.max_iterations, limits)
+    found = search(
+        problem,
+        first,
+        draws,
+        proved,
+        options.max_iterations,
+        limits,
+        own=lambda index: closed_form_starts(problem, index, first[index], limits, len(draws)),
+    )
     _verify(problem, found)
     minimum = _approach(problem, found, proved, beyond, draws, options.max_iterations, limits)
     _verify(problem, found)

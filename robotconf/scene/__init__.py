@@ -14,12 +14,17 @@ The scene
     with it; formats in ``robotconf/scene/_page.py``).
     :func:`view` shows one in the notebook; :class:`RecordingChannel` records instead of
     sending (tests and the offline HTML export use it).
+The work cell
+    :class:`CellScene` — ``rc.view(cell)``: every robot of a cell at its base, its objects
+    and frames with their names, collision capsules, a run with its contacts red while
+    they last, reach maps, an outlined entry (:mod:`robotconf.scene.workcell`).
 The page
     The widget's code (``js/``) draws the bar above the pane — classes
     ``robotconf-scene-controls`` (the bar), ``-play``, ``-speed``, ``-time``, ``-clock``,
     ``-fit``, ``-label-mode`` (buttons ``data-mode="off|names|positions"``), ``-frames``,
-    ``-trace`` — plays animations with its own clock, and writes labels as text boxes
-    (``robotconf-scene-label``) with leader lines (``robotconf-scene-leader``).
+    ``-trace``, ``-capsules`` (a cell's) — plays animations with its own clock, and writes
+    labels as text boxes (``robotconf-scene-label``) with leader lines
+    (``robotconf-scene-leader``).
 Building blocks
     :class:`RobotDrawing`, :func:`robot_size`, :class:`SceneLog`, :func:`pack_ops`,
     :func:`transforms_op`, :func:`align_y`, :func:`compose`, :func:`quaternions`;
@@ -41,10 +46,12 @@ from ._placement import align_y, compose, quaternions
 from ._playback import PlaybackState
 from ._scene import Scene
 from ._view import view
+from .workcell import CellScene
 
 __all__ = [
     # the scene
     "Scene",
+    "CellScene",
     "view",
     "PlaybackState",
     "RecordingChannel",

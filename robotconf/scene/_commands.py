@@ -30,6 +30,8 @@ __all__ = [
     "SceneLog",
     "RecordingChannel",
     "command_op",
+    "transform_command",
+    "scale_command",
     "set_object_op",
     "meshcat_op",
     "transforms_op",
@@ -61,6 +63,27 @@ class Op(NamedTuple):
 def command_op(command: dict[str, Any]) -> Op:
     """Wrap a lowered meshcat command (``{"type": "set_object", ...}``)."""
     return Op({"op": "command", "command": command})
+
+
+def transform_command(path: str, matrix: np.ndarray) -> Op:
+    """meshcat's ``set_transform`` of one path (``matrix`` 4×4, sent column-major).
+
+    >>> transform_command("/a", np.eye(4)).content["command"]["matrix"][:4]
+    [1.0, 0.0, 0.0, 0.0]
+    """
+    return command_op({"type": "set_transform", "path": path, "matrix": matrix.T.ravel().tolist()})
+
+
+def scale_command(size: float) -> Op:
+    """Scale everything robotconf draws (:data:`ROOT`) by ``1 / size``: a drawing
+    ``size`` length units across fills about one unit of meshcat's viewer, whose camera,
+    grid and clipping planes are made for that size.
+
+    >>> scale_command(50.0).content["command"]["matrix"][0]
+    0.02
+    """
+    scale = 1.0 / size
+    return transform_command(ROOT, np.diag([scale, scale, scale, 1.0]))
 
 
 def set_object_op(path: str, obj: dict[str, Any]) -> Op:
@@ -169,22 +192,29 @@ def playback_op(action: str, **fields: Any) -> Op:
     return Op({"op": "playback", "action": action, **fields})
 
 
-def options_op(labels: str, frames: bool, trace: bool, controls: bool) -> Op:
+def options_op(
+    labels: str, frames: bool, trace: bool, controls: bool, capsules: bool | None = None
+) -> Op:
     """What the page's bar shows as chosen: the labels mode, frames and trace switches, and
-    whether the bar is drawn at all.
+    whether the bar is drawn at all; ``capsules`` (a work cell's switch of the links'
+    collision capsules) only where there are capsules to show, else the bar has no such
+    button.
 
     >>> options_op("names", False, True, True).content["labels"]
     'names'
+    >>> options_op("names", False, True, True, capsules=False).content["capsules"]
+    False
     """
-    return Op(
-        {
-            "op": "options",
-            "labels": labels,
-            "frames": bool(frames),
-            "trace": bool(trace),
-            "controls": bool(controls),
-        }
-    )
+    content = {
+        "op": "options",
+        "labels": labels,
+        "frames": bool(frames),
+        "trace": bool(trace),
+        "controls": bool(controls),
+    }
+    if capsules is not None:
+        content["capsules"] = bool(capsules)
+    return Op(content)
 
 
 def pack_ops(

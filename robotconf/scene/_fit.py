@@ -13,9 +13,9 @@ from collections.abc import Sequence
 
 import numpy as np
 
-from ._commands import Op, command_op
+from ._commands import Op, command_op, fit_op, transform_command
 
-__all__ = ["view_sphere", "inside", "camera_op", "CENTRED"]
+__all__ = ["view_sphere", "inside", "camera_op", "centring_ops", "CENTRED"]
 
 #: What centring moves: everything meshcat draws for us, and its grid and world axes.
 CENTRED = ("/meshcat", "/Grid", "/Axes")
@@ -69,3 +69,16 @@ def camera_op() -> Op:
             "value": [0.9, 0.6, 0.9],
         }
     )
+
+
+def centring_ops(centre: np.ndarray, radius: float, size: float) -> list[Op]:
+    """Centre the sphere (``centre`` (3,), ``radius``, length units) at the orbit centre
+    and fit the camera to it, in a drawing scaled by ``1 / size``.
+
+    >>> ops = centring_ops(np.array([20.0, 0, 10]), 25.0, 50.0)
+    >>> ops[0].content["command"]["matrix"][12:15], ops[-1].content
+    ([-0.4, -0.0, -0.2], {'op': 'fit', 'radius': 0.5})
+    """
+    shift = np.eye(4)
+    shift[:3, 3] = -np.asarray(centre, dtype=float) / size
+    return [transform_command(path, shift) for path in CENTRED] + [fit_op(radius / size)]

@@ -15,15 +15,25 @@ import json
 from collections.abc import Callable, Mapping
 from typing import Any
 
+from .._errors import InvalidInputError
+from .._validation import one_line
 from ._assets import meshcat_source, script
-from ._commands import Op, SceneLog, command_op, pack_ops
+from ._commands import Op, SceneLog, pack_ops
 from ._fit import CENTRED
 from ._labels import LABEL_MODES
-from ._playback import TRACE, Playback
+from ._playback import Playback
 from ._robot_layer import RobotLayer
 from ._taught_points import TaughtPointsLayer
 
-__all__ = ["scene_html", "bar_choices", "script_safe", "PAGE_SCRIPTS"]
+__all__ = [
+    "scene_html",
+    "bar_choices",
+    "trace_choices",
+    "fit_ops",
+    "page_title",
+    "script_safe",
+    "PAGE_SCRIPTS",
+]
 
 #: The page's code of a scene (``js/``), shared by the widget and the HTML export: the
 #: viewer glue, the labels, the player, the bar, and the page that holds them.
@@ -114,6 +124,26 @@ def scene_html(
     )
 
 
+#: The longest page title kept (a browser tab shows far less).
+MAX_TITLE_CHARS = 200
+
+
+def page_title(title: Any, default: str) -> str:
+    """An exported page's title: ``title`` (text, at most :data:`MAX_TITLE_CHARS`
+    characters) or ``default``; :func:`scene_html` escapes it.
+
+    >>> page_title(None, "robot"), page_title("Cell <A>", "robot")
+    ('robot', 'Cell <A>')
+    """
+    if title is None:
+        return default
+    if not isinstance(title, str) or len(title) > MAX_TITLE_CHARS:
+        raise InvalidInputError(
+            "title", one_line(title), f"text of at most {MAX_TITLE_CHARS} characters"
+        )
+    return title
+
+
 def script_safe(text: str) -> str:
     """JSON text that cannot end or re-open the ``<script>`` element it is written in.
 
@@ -161,16 +191,27 @@ def bar_choices(
         str(value).lower(): [robot.visibility_op("frames", value), options(frames=value)]
         for value in (True, False)
     }
-    trace: dict[str, list[Op]] = {"true": [], "false": []}
-    if playback.loaded:
-        delete = command_op({"type": "delete", "path": TRACE})
-        trace = {
-            "true": [playback.trace_op(), options(trace=True)],
-            "false": [delete, options(trace=False)],
-        }
-    # The fit as last sent: the centring transforms and the camera's distance.
-    fit = [op for op in log.ops() if op.content["op"] == "fit" or _centring(op)]
-    return {"labels": labels, "frames": frames, "trace": trace, "fit": fit}
+    return {
+        "labels": labels,
+        "frames": frames,
+        "trace": trace_choices(playback, options),
+        "fit": fit_ops(log),
+    }
+
+
+def trace_choices(playback: Playback, options: Callable[..., Op]) -> dict[str, list[Op]]:
+    """``{"true": ops, "false": ops}`` that draw or remove the loaded animation's traces."""
+    if not playback.loaded:
+        return {"true": [], "false": []}
+    return {
+        "true": [*playback.trace_ops(), options(trace=True)],
+        "false": [*playback.trace_deletes(), options(trace=False)],
+    }
+
+
+def fit_ops(log: SceneLog) -> list[Op]:
+    """The fit as last sent: the centring transforms and the camera's distance."""
+    return [op for op in log.ops() if op.content["op"] == "fit" or _centring(op)]
 
 
 def _centring(op: Op) -> bool:

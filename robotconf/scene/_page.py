@@ -8,6 +8,7 @@ takes them, so a headless test can play the page:
     The student asked for a view option in the bar. ``R`` is one of
     ``{"kind": "labels", "mode": "off" | "names" | "positions"}``,
     ``{"kind": "frames", "value": bool}``, ``{"kind": "trace", "value": bool}``,
+    ``{"kind": "capsules", "value": bool}`` (a work cell's collision capsules),
     ``{"kind": "fit"}``.
 ``{"kind": "playback", "event": E, "time": t, "playing": bool, "speed": s, "animation": k}``
     The page's player changed: ``E`` is ``"play"``, ``"pause"``, ``"seek"``,
@@ -50,7 +51,7 @@ def read_request(request: Any) -> dict[str, Any] | None:
     kind = request.get("kind")
     if kind == "labels" and request.get("mode") in LABEL_MODES:
         return {"kind": "labels", "mode": str(request["mode"])}
-    if kind in ("frames", "trace") and isinstance(request.get("value"), bool):
+    if kind in ("frames", "trace", "capsules") and isinstance(request.get("value"), bool):
         return {"kind": str(kind), "value": request["value"]}
     if kind == "fit":
         return {"kind": "fit"}

@@ -10,7 +10,9 @@ A motion travels as meshcat's ``set_animation`` (:func:`animation_command`): key
 tracks of every drawn item in motion seconds, loaded paused; the page's player applies
 the speed, so playback costs the kernel nothing and survives in an HTML export. Kernel
 commands (``play``, ``pause``, ``seek``, ``set_speed``) are applied in the page; a report
-never triggers a command, so nothing echoes back and forth.
+never triggers a command, so nothing echoes back and forth. :meth:`Playback.load_animation`
+plays any such command (a work cell's robots, capsules and contacts on one clock), with
+one end-effector trace per path it is given.
 """
 
 from __future__ import annotations
@@ -35,6 +37,10 @@ __all__ = [
     "PlaybackState",
     "animation_command",
     "animation_state",
+    "keyframe_indices",
+    "placement_clips",
+    "clip",
+    "track",
     "TRACE",
     "PLAYBACK_EVENTS",
     "MAX_FRAMES",
@@ -107,8 +113,10 @@ class Playback:
         self.trace = False
         self._id = 0  # which animation: a report of an older one is stale
         self._duration = 0.0
-        # Every labelled point (frames, then the EE) at the keyframes: the trace, the fit.
-        self._points = np.zeros((0, 1, 3))
+        # Where the animation takes the drawn points (for the fit), and each end-effector
+        # path to draw as a trace, by the path of its line.
+        self._extent = np.zeros((0, 3))
+        self._traces: dict[str, np.ndarray] = {}
         self._loaded = False
         self._playing = False
         self._time = 0.0  # motion seconds, at monotonic() == self._since
@@ -129,16 +137,48 @@ class Playback:
     def load(self, drawing: RobotDrawing, motion: Any, *, speed: float, play: bool) -> None:
         """Load ``motion`` of the drawn robot into the views, playing from 0 if ``play``."""
         command = animation_command(drawing, motion, root=ROBOT)
+        duration, points = animation_state(motion)
+        step = max(1, len(points) // 200)  # the fit needs about 200 keyframes of it
+        extent = np.vstack([points[::step], points[-1:]]).reshape(-1, 3)
+        traces = {TRACE: points[:, -1]}
+        self.load_animation(command, duration, extent, traces, speed=speed, play=play)
+
+    def load_animation(
+        self,
+        command: dict[str, Any],
+        duration: float,
+        extent: np.ndarray,
+        traces: dict[str, np.ndarray],
+        *,
+        speed: float,
+        play: bool,
+    ) -> None:
+        """Load a ``set_animation`` command into the views, playing from 0 if ``play``.
+
+        Parameters
+        ----------
+        command : dict
+            meshcat's ``set_animation``, loaded paused (:func:`animation_command`).
+        duration : float
+            Its length (s): the bar's time runs from 0 to it.
+        extent : ndarray, shape (k, 3)
+            Points the animation takes the drawing to (cell frame), for the fit.
+        traces : dict
+            ``{path: points (K, 3)}``: each end-effector path, drawn as a line at that
+            scene path (in its parent's frame) while the trace is on.
+        speed : float
+        play : bool
+        """
         speed = _check_speed(speed)
         play = check_flag(play, "play")
-        duration, points = animation_state(motion)
         self._id += 1
-        self._loaded, self._duration, self._points = True, duration, points
+        self._loaded, self._duration = True, float(duration)
+        self._extent, self._traces = extent, dict(traces)
         self._speed = speed
         self._set(0.0, play)
         ops = [meshcat_op(command)]
         if self.trace:
-            ops.append(self.trace_op())
+            ops += self.trace_ops()
         # The keyframes are the state a new view replays; where the player stands is
         # added by replay_ops() when a view asks.
         self._outbox.send([*ops, self._load_op()], logged=ops)
@@ -152,8 +192,9 @@ class Playback:
         self._outbox.log.drop(("set_animation", ""))
         ops = [playback_op("clear")]
         if self.trace:
-            self._outbox.log.forget(TRACE)
-            ops.append(command_op({"type": "delete", "path": TRACE}))
+            for path in self._traces:
+                self._outbox.log.forget(path)
+            ops += self.trace_deletes()
         return ops
 
     def forget(self) -> None:
@@ -197,9 +238,10 @@ class Playback:
         if not self._loaded:
             return
         if visible:
-            self._outbox.send([self.trace_op()])
+            self._outbox.send(self.trace_ops())
         else:
-            self._outbox.delete(TRACE)
+            for path in self._traces:
+                self._outbox.delete(path)
 
     def report(self, event: dict[str, Any]) -> PlaybackState | None:
         """Follow a report of the page's player (checked by the scene): the new state, or
@@ -212,6 +254,14 @@ class Playback:
             self._set(min(max(event["time"], 0.0), self._duration), event["playing"])
         self._speed = event.get("speed", self._speed)
         return self.state()
+
+    def replay(self, ops: list[Op], *, from_start: bool = False) -> list[Op]:
+        """A scene log's ``ops`` in replay order, then where the player stands: a new view
+        or a reloaded page shows what the others show (the animation's frame once one is
+        loaded, else the current drawing); an exported file plays it ``from_start``."""
+        animation = [op for op in ops if _is_animation(op)]
+        rest = [op for op in ops if not _is_animation(op)]
+        return rest + animation + self.replay_ops(from_start=from_start)
 
     def replay_ops(self, *, from_start: bool = False) -> list[Op]:
         """What a new view needs to stand where the others do: the player loaded at the
@@ -245,17 +295,29 @@ class Playback:
         elapsed = (monotonic() if now is None else now) - self._since
         return min(self._time + elapsed * self._speed, self._duration)
 
-    def trace_op(self) -> Op:
-        """The end-effector's path of the loaded motion, as one line."""
-        return set_object_op(TRACE, polyline(self._points[:, -1], COLORS["end_effector"]))
+    def trace_ops(self) -> list[Op]:
+        """The end-effector's path of the loaded motion, one line per trace."""
+        color = COLORS["end_effector"]
+        return [
+            set_object_op(path, polyline(points, color)) for path, points in self._traces.items()
+        ]
+
+    def trace_deletes(self) -> list[Op]:
+        """The ops that remove every trace line from a view."""
+        return [command_op({"type": "delete", "path": path}) for path in self._traces]
 
     def extent(self) -> np.ndarray:
         """Where the loaded motion takes the frames and the end effector (k, 3), for the
         fit (at most about 200 keyframes of it)."""
         if not self._loaded:
             return np.zeros((0, 3))
-        step = max(1, len(self._points) // 200)
-        return np.vstack([self._points[::step], self._points[-1:]]).reshape(-1, 3)
+        return self._extent
+
+
+def _is_animation(op: Op) -> bool:
+    content = op.content
+    kind = content["command"]["type"] if content["op"] == "command" else content.get("type")
+    return kind == "set_animation"
 
 
 def _check_speed(speed: Any) -> float:
@@ -300,25 +362,41 @@ def animation_command(drawing: RobotDrawing, motion: Any, *, root: str) -> dict[
             "motion.q", f"shape {q.shape[1:]}", f"a motion of this robot's {robot.n} coordinates"
         )
     t = np.asarray(t, dtype=float)
-    keep = _keyframes(len(t))
+    keep = keyframe_indices(len(t))
     times = float32_array(t[keep] - t[0])
     placement = drawing.placements(q[keep])
-    quats = quaternions(placement.rotation)
-    animations = []
-    for k, path in enumerate(drawing.paths):
-        tracks = [
-            _track(".position", "vector3", times, placement.position[:, k]),
-            _track(".quaternion", "quaternion", times, quats[:, k]),
-            _track(".scale", "vector3", times, placement.scale[:, k]),
-        ]
-        # fps = 1: keyframe times are in seconds.
-        clip = {"fps": 1, "name": "default", "tracks": tracks}
-        animations.append({"path": f"{root}/{path}", "clip": clip})
+    paths = [f"{root}/{path}" for path in drawing.paths]
     return {
         "type": "set_animation",
-        "animations": animations,
+        "animations": placement_clips(paths, times, placement),
         "options": {"play": False, "repetitions": 1},
     }
+
+
+def placement_clips(
+    paths: list[str], times: msgpack.ExtType, placement: Any
+) -> list[dict[str, Any]]:
+    """One clip per path: its item's position, rotation and scale at the keyframe
+    ``times``, from a :class:`~robotconf.scene._placement.Placement` of shape (K, m, …)
+    for the m ``paths``."""
+    quats = quaternions(placement.rotation)
+    return [
+        clip(
+            path,
+            [
+                track(".position", "vector3", times, placement.position[:, k]),
+                track(".quaternion", "quaternion", times, quats[:, k]),
+                track(".scale", "vector3", times, placement.scale[:, k]),
+            ],
+        )
+        for k, path in enumerate(paths)
+    ]
+
+
+def clip(path: str, tracks: list[dict[str, Any]]) -> dict[str, Any]:
+    """An animation entry of ``set_animation``: the clip of ``tracks`` played on ``path``."""
+    # fps = 1: keyframe times are in seconds.
+    return {"path": path, "clip": {"fps": 1, "name": "default", "tracks": tracks}}
 
 
 def animation_state(motion: Any) -> tuple[float, np.ndarray]:
@@ -334,15 +412,30 @@ def animation_state(motion: Any) -> tuple[float, np.ndarray]:
     (2.0, (5, 2, 3))
     """
     t = np.asarray(motion.t, dtype=float)
-    points = np.asarray(motion.position, dtype=float)[_keyframes(len(t))]
+    points = np.asarray(motion.position, dtype=float)[keyframe_indices(len(t))]
     duration = float(t[-1] - t[0]) if len(t) else 0.0
     return duration, points
 
 
-def _keyframes(samples: int) -> np.ndarray:
+def keyframe_indices(samples: int) -> np.ndarray:
+    """The samples an animation keeps: all, or :data:`MAX_FRAMES` spread evenly (the
+    first and the last kept).
+
+    >>> keyframe_indices(4).tolist(), len(keyframe_indices(10 * MAX_FRAMES))
+    ([0, 1, 2, 3], 1500)
+    """
     return np.unique(np.linspace(0, samples - 1, min(samples, MAX_FRAMES)).round().astype(int))
 
 
-def _track(name: str, kind: str, times: msgpack.ExtType, values: np.ndarray) -> dict[str, Any]:
-    # float32, as WebGL draws them anyway: an animation travels as bytes, not as text.
-    return {"name": name, "type": kind, "times": times, "values": float32_array(values)}
+def track(
+    name: str, kind: str, times: msgpack.ExtType, values: Any, **extra: Any
+) -> dict[str, Any]:
+    """One keyframe track of a clip: ``name`` (``".position"``, ``".visible"``, …), its
+    three.js ``kind`` (``"vector3"``, ``"quaternion"``, ``"bool"``, ``"color"``), keyframe
+    ``times`` (:func:`~robotconf.scene._three.float32_array`, seconds) and ``values``
+    (float32 as bytes, or a list of booleans); ``extra`` e.g. ``interpolation=2300``
+    (three.js's discrete steps)."""
+    if isinstance(values, np.ndarray):
+        # float32, as WebGL draws them anyway: an animation travels as bytes, not as text.
+        values = float32_array(values)
+    return {"name": name, "type": kind, "times": times, "values": values, **extra}

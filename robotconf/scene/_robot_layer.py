@@ -21,17 +21,18 @@ from ._commands import (
     ROOT,
     Op,
     Outbox,
-    command_op,
     labels_op,
+    scale_command,
     set_object_op,
     shape_object,
+    transform_command,
     transforms_op,
     wire_matrices,
 )
 from ._drawing import RobotDrawing, snapshot_size, structure_of
 from ._labels import label_digits, merge_coincident
 
-__all__ = ["RobotLayer", "Shown", "ROBOT", "RESIZE_FACTOR"]
+__all__ = ["RobotLayer", "Shown", "ROBOT", "RESIZE_FACTOR", "transform_command"]
 
 #: The robot's objects live under this path; clouds, ghosts and markers beside it.
 ROBOT = f"{ROOT}/robot"
@@ -48,6 +49,11 @@ class RobotLayer:
     label_mode : {"off", "names", "positions"}
     frames : bool
         Whether the module frames' triads show.
+    root : str
+        The scene path of the robot's group (a work cell draws several robots).
+    scaled : bool
+        Scale everything robotconf draws to the robot's size when the objects are built
+        (a work cell scales to the cell's size instead).
 
     Examples
     --------
@@ -62,10 +68,25 @@ class RobotLayer:
     'EE (65.1, 0.0, 0.8)'
     """
 
-    def __init__(self, outbox: Outbox, label_mode: str, frames: bool) -> None:
+    def __init__(
+        self,
+        outbox: Outbox,
+        label_mode: str,
+        frames: bool,
+        *,
+        root: str = ROBOT,
+        scaled: bool = True,
+    ) -> None:
         self._outbox = outbox
         self.label_mode = label_mode
         self.frames = frames
+        self.root = root
+        self._scaled = scaled
+        # Where the position labels are written: the robot's base in that frame, a name
+        # before each point's and a unit after the numbers (set_label_frame).
+        self._base: np.ndarray | None = None
+        self._prefix = ""
+        self._unit = ""
         #: An animation moves the items: labels then show names, not numbers that stand
         #: still while the robot moves.
         self.moving = False
@@ -119,6 +140,12 @@ class RobotLayer:
         assert self.drawing is not None and self.snapshot is not None
         return self.drawing.labels(self.snapshot, self.digits)
 
+    def texts(self) -> list[str]:
+        """The label texts as the views show them (none with labels off)."""
+        if self.label_mode == "off" or self.snapshot is None:
+            return []
+        return self._texts(self.label_mode)
+
     def set_label_mode(self, mode: str) -> None:
         """Show the labels as ``"off"``, ``"names"`` or ``"positions"`` (mode checked)."""
         self.label_mode = mode
@@ -127,6 +154,20 @@ class RobotLayer:
         live, logged = self._label_ops()
         visibility = self.visibility_op("labels", mode != "off")
         self._outbox.send([visibility, *live], logged=[visibility, *logged])
+
+    def set_label_frame(
+        self, base: np.ndarray | None, prefix: str = "", unit: str | None = None
+    ) -> None:
+        """Write the position labels in another frame: ``base`` (4×4) is the robot's base
+        in it (``None``: the base frame itself), ``prefix`` goes before every point's name
+        (``"arm M1"``) and ``unit`` after its numbers; labels that changed are sent."""
+        self._base = None if base is None else np.array(base, dtype=float)
+        self._prefix = prefix
+        self._unit = f" {unit}" if unit else ""
+        self._texts_known.clear()
+        if self.snapshot is not None:
+            live, logged = self._label_ops()
+            self._outbox.send(live, logged=logged)
 
     def set_frames(self, visible: bool) -> None:
         """Show or hide the module frames' triads."""
@@ -174,13 +215,19 @@ class RobotLayer:
 
     def _texts(self, mode: str) -> list[str]:
         assert self.drawing is not None and self.snapshot is not None
-        names = self.drawing.point_names
+        names = [self._prefix + name for name in self.drawing.point_names]
         if self.moving:
             # The names themselves, one per moving point: a number, or a merge of points
             # that part during the motion, would be wrong.
-            return list(names)
+            return names
         points = np.vstack([self.snapshot.frame_origins, self.snapshot.end_effector])
-        return merge_coincident(names, points, self.digits, mode == "positions", self._texts_known)
+        if self._base is not None:
+            points = points @ self._base[:3, :3].T + self._base[:3, 3]
+        positions = mode == "positions"
+        texts = merge_coincident(names, points, self.digits, positions, self._texts_known)
+        if positions and self._unit:
+            return [text + self._unit if text else text for text in texts]
+        return texts
 
     def _label_ops(self) -> tuple[list[Op], list[Op]]:
         """The labels that changed (for live views) and all labels (for the log)."""
@@ -193,25 +240,22 @@ class RobotLayer:
         return live if changed else [], [labels_op(paths, texts)]
 
     def _build(self, drawing: RobotDrawing) -> None:
-        self._outbox.delete(ROBOT)
+        root = self.root
+        self._outbox.delete(root)
         self.drawing = drawing
         self._shown.forget()
-        self._paths = tuple(f"{ROBOT}/{path}" for path in drawing.paths)
-        self._label_paths = tuple(f"{ROBOT}/{path}" for path in drawing.label_paths)
-        scale = 1.0 / drawing.size
-        # Everything robotconf draws is scaled to about one unit: meshcat's camera, grid
-        # and clipping planes are made for that size.
-        ops = [transform_command(ROOT, np.diag([scale, scale, scale, 1.0]))]
+        self._paths = tuple(f"{root}/{path}" for path in drawing.paths)
+        self._label_paths = tuple(f"{root}/{path}" for path in drawing.label_paths)
+        ops = []
+        if self._scaled:
+            # Everything robotconf draws is scaled to about one unit: meshcat's camera,
+            # grid and clipping planes are made for that size.
+            ops.append(scale_command(drawing.size))
         for path, item in zip(self._paths, drawing.items, strict=True):
             ops.append(set_object_op(path, shape_object(item.shape, item.size, item.color)))
         ops.append(self.visibility_op("frames", self.frames))
         ops.append(self.visibility_op("labels", self.label_mode != "off"))
         self._outbox.send(ops)
-
-
-def transform_command(path: str, matrix: np.ndarray) -> Op:
-    """meshcat's ``set_transform`` of one path (``matrix`` 4×4, sent column-major)."""
-    return command_op({"type": "set_transform", "path": path, "matrix": matrix.T.ravel().tolist()})
 
 
 def _resized(old: float, new: float) -> bool:

@@ -24,15 +24,15 @@ import numpy as np
 from .._errors import InvalidInputError
 from .._validation import check_flag, check_integer, one_line
 from ..kinematics import Robot, RobotSnapshot
-from ._commands import Op, Outbox, fit_op, options_op
+from ._commands import Op, Outbox, options_op
 from ._drawing import SPHERE_RADIUS, RobotDrawing
-from ._fit import CENTRED, camera_op, inside, view_sphere
+from ._fit import camera_op, centring_ops, inside, view_sphere
 from ._ghosts import GhostsLayer
 from ._labels import check_label_mode
 from ._page import route_message
 from ._playback import Playback, PlaybackState
 from ._points import PointClouds
-from ._robot_layer import RobotLayer, transform_command
+from ._robot_layer import RobotLayer
 from ._target import TargetMarker
 from ._taught_points import TaughtPointsLayer
 
@@ -246,11 +246,7 @@ class Scene:
         drawing = self._drawing()
         centre, radius = view_sphere(self._extents(), 1.2 * SPHERE_RADIUS * drawing.size)
         self._fitted = (centre, radius)
-        shift = np.eye(4)
-        shift[:3, 3] = -centre / drawing.size
-        ops = [transform_command(path, shift) for path in CENTRED]
-        ops.append(fit_op(radius / drawing.size))
-        self._outbox.send(ops)
+        self._outbox.send(centring_ops(centre, radius, drawing.size))
 
     # -- playback ---------------------------------------------------------------------------
 
@@ -391,23 +387,29 @@ class Scene:
         """
         route_message(message, self._playback, self._apply, self.on_request, self.on_playback)
 
-    def export_html(self, path: str | Path) -> Path:
+    def export_html(self, path: str | Path, title: str | None = None) -> Path:
         """Write the scene as one self-contained HTML file that opens offline.
 
         The viewer code is inlined (no CDN, no network); the bar works in the file too:
         an animation plays, pauses and scrubs, and labels, frames, trace and fit switch.
 
+        Parameters
+        ----------
+        path : str or pathlib.Path
+        title : str, optional
+            The page's title (default: the robot's name, else ``"robot"``); escaped.
+
         Returns
         -------
         pathlib.Path
         """
-        from ._html import bar_choices, scene_html
+        from ._html import bar_choices, page_title, scene_html
 
         choices = bar_choices(
             self._robot, self._taught, self._playback, self._outbox.log, self._options_op
         )
         target = Path(path)
-        title = self.robot.name or "robot"
+        title = page_title(title, self.robot.name or "robot")
         ops = self._replay(from_start=True)
         target.write_text(scene_html(ops, choices, title=title), "utf-8")
         return target
@@ -442,7 +444,7 @@ class Scene:
             self.show_frames(request["value"])
         elif kind == "trace":
             self.show_trace(request["value"])
-        else:
+        elif kind == "fit":
             self.fit_view()
 
     def _options_op(self, **changes: Any) -> Op:
@@ -456,13 +458,9 @@ class Scene:
         return options_op(**options)
 
     def _replay(self, *, from_start: bool = False) -> list[Op]:
-        """The log in replay order, then where the player stands: a new view or a
-        reloaded page shows what the others show (the animation's frame once one is
-        loaded, else the current snapshot); an exported file plays it ``from_start``."""
-        ops = self._outbox.log.ops()
-        animation = [op for op in ops if _is_animation(op)]
-        rest = [op for op in ops if not _is_animation(op)]
-        return rest + animation + self._playback.replay_ops(from_start=from_start)
+        """The log in replay order, then where the player stands (see
+        :meth:`Playback.replay <robotconf.scene._playback.Playback.replay>`)."""
+        return self._playback.replay(self._outbox.log.ops(), from_start=from_start)
 
     def _extents(self) -> list[np.ndarray]:
         return [
@@ -486,12 +484,6 @@ class Scene:
 
     def _size(self) -> float:
         return self._drawing().size
-
-
-def _is_animation(op: Op) -> bool:
-    content = op.content
-    kind = content["command"]["type"] if content["op"] == "command" else content.get("type")
-    return kind == "set_animation"
 
 
 def _check_robot(robot: Any) -> None:

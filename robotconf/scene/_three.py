@@ -32,6 +32,8 @@ __all__ = [
     "triad",
     "point_cloud",
     "polyline",
+    "line_segments",
+    "triangles_geometry",
     "label_anchor",
 ]
 
@@ -211,6 +213,37 @@ def polyline(points: np.ndarray, color: int) -> dict[str, Any]:
     }
     material = _material("LineBasicMaterial", color, vertex_colors=False)
     return _object("Line", geometry, material)
+
+
+def line_segments(points: np.ndarray, color: int) -> dict[str, Any]:
+    """Separate line segments, one per pair of rows of ``points`` (2k, 3), in one colour.
+
+    >>> lines = line_segments(np.zeros((24, 3)), 0xFFB000)
+    >>> lines["object"]["type"], lines["materials"][0]["color"]
+    ('LineSegments', 16756736)
+    """
+    geometry = {
+        "uuid": _uuid(),
+        "type": "BufferGeometry",
+        "data": {"attributes": {"position": float32_attribute(points)}},
+    }
+    material = _material("LineBasicMaterial", color, vertex_colors=False)
+    return _object("LineSegments", geometry, material)
+
+
+def triangles_geometry(corners: np.ndarray) -> dict[str, Any]:
+    """A surface of separate triangles: ``corners`` (F, 3, 3), each triangle's three
+    corners in turn (the viewer computes flat normals for it).
+
+    >>> geometry = triangles_geometry(np.zeros((2, 3, 3)))
+    >>> geometry["type"], len(geometry["data"]["attributes"]["position"]["array"].data)
+    ('BufferGeometry', 72)
+    """
+    return {
+        "uuid": _uuid(),
+        "type": "BufferGeometry",
+        "data": {"attributes": {"position": float32_attribute(np.reshape(corners, (-1, 3)))}},
+    }
 
 
 def label_anchor(clearance: float) -> dict[str, Any]:

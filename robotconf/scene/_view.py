@@ -1,19 +1,35 @@
-"""``rc.view(robot)``: a scene shown in the notebook, once per cell (IPython's running cell
-tells which one)."""
+"""``rc.view(robot)`` and ``rc.view(cell)``: a scene shown in the notebook, once per cell
+(IPython's running cell tells which one)."""
 
 from __future__ import annotations
 
 import sys
 from typing import Any
 
+from ..cell import Cell
 from ..kinematics import Robot
 from ._scene import Scene
+from .workcell import CellScene
 
 __all__ = ["view", "execution_count"]
 
 
-def view(robot: Robot, q: Any = None, *, display: bool = True, **options: Any) -> Scene:
-    """Show a robot in a 3D pane in the notebook (see :class:`Scene` for ``options``).
+def view(
+    robot: Robot | Cell, q: Any = None, *, display: bool = True, **options: Any
+) -> Scene | CellScene:
+    """Show a robot, or a work cell, in a 3D pane in the notebook.
+
+    Parameters
+    ----------
+    robot : Robot or Cell
+        A robot (a :class:`Scene`) or a cell (a :class:`CellScene`: its robots, objects
+        and frames).
+    q : array-like or dict, optional
+        The robot's coordinates; for a cell, ``{robot name: q}``.
+    display : bool
+        Show the pane in the notebook now.
+    **options
+        The scene's options (see :class:`Scene` and :class:`CellScene`).
 
     Examples
     --------
@@ -21,8 +37,13 @@ def view(robot: Robot, q: Any = None, *, display: bool = True, **options: Any) -
     >>> scene = rc.view(rc.Robot([rc.Module("Rz")], end_effector=(1, 0, 0)), display=False)
     >>> scene.labels()
     ['M1 (0.00, 0.00, 0.00)', 'EE (1.00, 0.00, 0.00)']
+    >>> cell = rc.Cell(unit="mm"); cell.add_robot("arm", rc.preset("paper"))
+    >>> rc.view(cell, {"arm": [0, 0, 0.5]}, display=False).labels()[-1]
+    'EE (65.1, 0.0, 0.8) mm'
     """
-    scene = Scene(robot, q, **options)
+    scene: Scene | CellScene = (
+        CellScene(robot, q, **options) if isinstance(robot, Cell) else Scene(robot, q, **options)
+    )
     if display:
         from IPython.display import display as show
 

@@ -12,6 +12,8 @@
 //                               data-mode "off" | "names" | "positions" and aria-checked
 //   .robotconf-scene-frames     toggle button "frames", aria-pressed
 //   .robotconf-scene-trace      toggle button "trace", aria-pressed
+//   .robotconf-scene-capsules   toggle button "capsules", aria-pressed (a work cell's links'
+//                               collision capsules; hidden where there are none)
 // The player's controls follow the page's player; the view options show the kernel's
 // values (an "options" op), so a click shows once the kernel took it.
 
@@ -123,7 +125,13 @@ function rcCreateBar(request) {
     rcElement("button", className, { type: "button", "aria-pressed": "false", title }, text);
   const frames = toggle("robotconf-scene-frames", "frames", "x, y, z axes of every frame");
   const trace = toggle("robotconf-scene-trace", "trace", "the end-effector's path in an animation");
-  bar.append(play, speed, time, clock, fit, modes, frames, trace);
+  const capsules = toggle(
+    "robotconf-scene-capsules",
+    "capsules",
+    "each link's collision capsule, as the cell's checks measure it",
+  );
+  capsules.hidden = true;
+  bar.append(play, speed, time, clock, fit, modes, frames, trace, capsules);
 
   bar.addEventListener("keydown", (event) => {
     if (RC_BAR_KEYS.has(event.key)) event.stopPropagation();
@@ -134,6 +142,9 @@ function rcCreateBar(request) {
   );
   trace.addEventListener("click", () =>
     request({ kind: "trace", value: trace.getAttribute("aria-pressed") !== "true" }),
+  );
+  capsules.addEventListener("click", () =>
+    request({ kind: "capsules", value: capsules.getAttribute("aria-pressed") !== "true" }),
   );
 
   const setSpeeds = (current) => {
@@ -213,7 +224,9 @@ function rcCreateBar(request) {
         button.setAttribute("aria-checked", String(on));
         button.classList.toggle("robotconf-scene-on", on);
       }
-      for (const [button, on] of [[frames, op.frames], [trace, op.trace]]) {
+      // Only a work cell sends "capsules"; a robot's scene has no such button.
+      capsules.hidden = typeof op.capsules !== "boolean";
+      for (const [button, on] of [[frames, op.frames], [trace, op.trace], [capsules, op.capsules]]) {
         button.setAttribute("aria-pressed", String(Boolean(on)));
         button.classList.toggle("robotconf-scene-on", Boolean(on));
       }
