@@ -65,6 +65,7 @@ def target_of(move: Move) -> str:
     """What a move's target is: ``"q"``, ``"point"``, ``"pose"``, ``"frame"`` or ``""``
     (a Wait).
 
+    >>> from robotconf.programs import Wait
     >>> target_of(LIN(frame="table/pick")), target_of(PTP(q=(0.0,))), target_of(Wait(1.0))
     ('frame', 'q', '')
     """
@@ -84,6 +85,7 @@ def target_of(move: Move) -> str:
 def renamed_frames(program: RobotProgram, renames: Mapping[str, str]) -> RobotProgram:
     """The program with every move's frame renamed as the cell renamed it.
 
+    >>> from robotconf.programs import Wait
     >>> program = RobotProgram((LIN(frame="table/pick"), Wait(1.0)))
     >>> renamed_frames(program, {"table/pick": "bench/pick"}).moves[0].frame
     'bench/pick'

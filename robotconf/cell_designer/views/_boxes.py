@@ -92,8 +92,20 @@ def pose_boxes(
         if k == 3:
             parts.append(text(f"roll, pitch, yaw [{units.angle}]", tone="note"))
         unit = LENGTH if k < 3 else ANGLE
+        # An angle in radians shows more digits than a length (1.570796 for 90 deg).
+        width = "64px" if k < 3 else "80px"
         parts.append(
-            box(f"{prefix}.pose{k}", numbers[k], unit, units, messages, rev, step=step, title=name)
+            box(
+                f"{prefix}.pose{k}",
+                numbers[k],
+                unit,
+                units,
+                messages,
+                rev,
+                step=step,
+                title=name,
+                width=width,
+            )
         )
     return parts
 

@@ -112,7 +112,7 @@ class ProgramsView:
                         messages,
                         rev,
                         step=0.1,
-                        width="76px",
+                        width="90px",
                         title="PTP joint speed (the core's default until typed)",
                     ),
                     text(f"path speed [{units.length}/s]", tone="note"),
