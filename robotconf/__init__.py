@@ -219,6 +219,7 @@ __all__ = [
     "CellScene",
     "configurator",
     "Configurator",
+    "cell_designer",
 ]
 
 # Kept importable under their old top-level names; not part of the notebook surface.
@@ -247,6 +248,7 @@ _ALSO_PUBLIC = (
 _LAZY = {
     "configurator": "panel",
     "Configurator": "panel",
+    "cell_designer": "cell_designer",
     "Scene": "scene",
     "CellScene": "scene",
     "view": "scene",

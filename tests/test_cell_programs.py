@@ -52,6 +52,18 @@ def test_a_frame_outside_a_cell_is_refused_naming_the_move():
     assert caught.value.field == "moves[0].frame"
 
 
+def test_an_unreachable_frame_is_named_not_printed_as_a_matrix():
+    cell = _cell()
+    cell.add_frame("far", rc.pose([300, 0, 30]), parent="table")  # 330 mm from the base
+    with pytest.raises(rc.InvalidInputError) as caught:
+        cell.program("arm", [PTP(q=[0, 0.3, -0.5]), LIN(frame="table/far")])
+    assert caught.value.field == "moves[1].frame" and caught.value.value == "table/far"
+    assert "'table/far'" in str(caught.value) and "shape (4, 4)" not in str(caught.value)
+    assert "beyond the reach" in str(caught.value)
+    with pytest.raises(rc.InvalidInputError, match=r"programs\['arm'\]\.moves\[0\]\.frame"):
+        cell.run({"arm": [LIN(frame="table/far")]})
+
+
 def test_a_move_with_a_frame_writes_it_and_a_move_without_does_not():
     assert LIN(frame="table/pick").to_dict()["frame"] == "table/pick"
     assert "frame" not in LIN(position=[1, 2, 3]).to_dict()

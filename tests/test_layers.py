@@ -38,9 +38,10 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("plots",),
     ("scene",),
     ("panel", "cli", "grading", "report"),
+    ("cell_designer",),
     ("__init__", "__main__"),
 )
-PRESENTATION = ("plots", "scene", "panel", "cli", "grading", "report")
+PRESENTATION = ("plots", "scene", "panel", "cli", "grading", "report", "cell_designer")
 SHARED_BASE = ("robotconf._errors", "robotconf._validation", "robotconf._budget")
 
 #: The only places where the core reaches up a layer: methods that hand over to a richer

@@ -287,6 +287,9 @@ def test_point_cloud_is_packed_and_validated(scene: Scene) -> None:
     assert position["array"].code == 0x17  # the viewer's Float32Array
     sent = np.frombuffer(position["array"].data, dtype=np.float32).reshape(-1, 3)
     np.testing.assert_allclose(sent, points, rtol=1e-6)
+    # 1 % of the robot, in the viewer's units (the drawing is scaled by 1 / size; three.js
+    # does not scale a point's size with it).
+    assert command["object"]["materials"][0]["size"] == pytest.approx(0.01)
     with pytest.raises(rc.InvalidInputError, match="points"):
         scene.add_point_cloud("w", np.zeros((4, 2)))
     with pytest.raises(rc.InvalidInputError, match="color"):

@@ -188,9 +188,18 @@ def test_reach_map_colours_say_how_many_branches(cell: rc.Cell) -> None:
         :, 0
     ].tolist() == [0, 80]
     assert grey["materials"][0]["opacity"] == 0.25
-    assert (
-        reached.get("color") and sent[f"{REACH}/reached"]["materials"][0]["size"] == 10.0
-    )  # half a voxel
+    # Half a voxel (10 mm) in the viewer's units: the drawing is scaled by 1 / size, and
+    # three.js sizes points in the viewer's units, so the size must be scaled too.
+    drawing = [
+        op.content["command"]["matrix"][0]
+        for op in scene.channel.ops
+        if op.content.get("command", {}).get("type") == "set_transform"
+        and op.content["command"]["path"] == "/meshcat/robotconf"
+    ][-1]
+    assert drawing < 0.02  # a cell some 100 mm across
+    assert reached.get("color")
+    assert sent[f"{REACH}/reached"]["materials"][0]["size"] == pytest.approx(10.0 * drawing)
+    assert sent[f"{REACH}/unreached"]["materials"][0]["size"] == pytest.approx(6.0 * drawing)
     assert scene.reach_map_legend == (
         "reach map: 3 of 5 voxels reachable; branches 1 (light green) … 4 (dark green); grey: none"
     )

@@ -72,7 +72,20 @@ def cell_program(cell: Cell, robot: Any, moves: Any, **options: Any) -> Program:
             resolved.append(move.resolved(lookup) if isinstance(move, Move) else move)
         except InvalidInputError as error:
             raise error.within(f"moves[{i}]") from None
-    return Program(planning_robot(entry), resolved, **options)
+    try:
+        return Program(planning_robot(entry), resolved, **options)
+    except InvalidInputError as error:
+        raise _named_by_frame(error, moves) from None
+
+
+def _named_by_frame(error: InvalidInputError, moves: Any) -> InvalidInputError:
+    """``error`` about a target that a move took from a cell frame, told with the frame's
+    name (the student typed the name, not the pose it resolved to)."""
+    for i, move in enumerate(moves):
+        frame = getattr(move, "frame", None)
+        if isinstance(frame, str) and error.field in (f"moves[{i}].pose", f"moves[{i}].end"):
+            return InvalidInputError(f"moves[{i}].frame", frame, error.allowed, error.problem)
+    return error
 
 
 def run(cell: Cell, programs: Any, *, dt: Any = 0.01, margin: Any = 0.0) -> CellRun:

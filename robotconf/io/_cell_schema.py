@@ -5,7 +5,8 @@ frames; every entry names its parent (``null``: the cell). Meshes are stored by 
 path relative to the cell file. Reading builds a new cell only after every entry, name
 and parent has been checked, so a bad file never leaves a half-loaded cell. Every
 error names the JSON path (``objects[2].size[1]``). docs/file-format.md, "Cells",
-describes the schema.
+describes the schema. A robot entry may carry its ``"program"`` (:mod:`._cell_programs`:
+the program schema's object, whose moves may name cell frames).
 """
 
 from __future__ import annotations
@@ -13,7 +14,7 @@ from __future__ import annotations
 import os
 from collections.abc import Mapping
 from pathlib import Path
-from typing import Any
+from typing import Any, Literal, overload
 
 import numpy as np
 
@@ -31,6 +32,7 @@ from ..cell import (
     Sphere,
     Tool,
 )
+from ._cell_programs import CellProgram, program_in, program_out
 from ._schema import numbers, robot_from_dict, robot_to_dict, text
 
 __all__ = ["CELL_FORMAT", "CELL_VERSION", "cell_to_dict", "cell_from_dict"]
@@ -57,6 +59,7 @@ _ROBOT = {
     "tool": False,
     "radius": False,
     "mount": False,
+    "program": False,
 }
 _TOOL = {"name": False, "tcp": False, "capsules": False}
 _FRAME = {"name": True, "pose": False, "parent": False}
@@ -109,8 +112,14 @@ def _shape_out(shape: Shape, folder: Path | None) -> dict[str, Any]:
     return data
 
 
-def cell_to_dict(cell: Cell, folder: Path | None = None) -> dict[str, Any]:
+def cell_to_dict(
+    cell: Cell, folder: Path | None = None, *, programs: Mapping[str, Any] | None = None
+) -> dict[str, Any]:
     """A cell as JSON data; mesh paths relative to ``folder`` (the cell file's).
+
+    ``programs`` maps robot names to a :class:`~robotconf.programs.Program`, a list of
+    moves or ``(moves, options)``: written as the robots' ``"program"`` (moves that name
+    a cell frame keep its name; a robot without moves gets none).
 
     >>> import robotconf as rc
     >>> cell = rc.Cell(unit="mm")
@@ -119,6 +128,12 @@ def cell_to_dict(cell: Cell, folder: Path | None = None) -> dict[str, Any]:
     >>> cell_to_dict(cell)["objects"][0]["radius"]
     2.0
     """
+    programs = dict(programs or {})
+    for robot in programs:
+        if robot not in cell.robots:
+            raise InvalidInputError(
+                "programs", one_line(robot), f"robots of the cell: {list(cell.robots)}"
+            )
     robots, objects, frames = [], [], []
     for name, entry in cell.entries.items():
         if entry.kind == "robot":
@@ -147,6 +162,9 @@ def cell_to_dict(cell: Cell, folder: Path | None = None) -> dict[str, Any]:
                     "mount": list(entry.mount),  # type: ignore[attr-defined]
                 }
             )
+            program = program_out(programs.get(name), f"programs[{name!r}]")
+            if program is not None:
+                robots[-1]["program"] = program
         elif entry.kind == "object":
             assert entry.shape is not None
             objects.append({**_shape_out(entry.shape, folder), "parent": entry.parent})
@@ -356,8 +374,21 @@ def _order(found: list[tuple[str, str, str, Any, str | None]]) -> list[int]:
     return order
 
 
-def cell_from_dict(data: Any, folder: Path | None = None) -> Cell:
+@overload
+def cell_from_dict(
+    data: Any, folder: Path | None = None, *, with_programs: Literal[False] = False
+) -> Cell: ...
+@overload
+def cell_from_dict(
+    data: Any, folder: Path | None = None, *, with_programs: Literal[True]
+) -> tuple[Cell, dict[str, CellProgram]]: ...
+def cell_from_dict(
+    data: Any, folder: Path | None = None, *, with_programs: bool = False
+) -> Cell | tuple[Cell, dict[str, CellProgram]]:
     """A new cell from parsed file data; mesh paths relative to ``folder``.
+
+    With ``with_programs``: ``(cell, {robot name: (moves, options)})`` for the robots
+    whose entry has a ``"program"`` (it is checked either way).
 
     >>> cell = cell_from_dict({"format": "robotconf-cell", "version": 1,
     ...     "objects": [{"name": "ball", "type": "sphere", "radius": 2}]})
@@ -388,6 +419,8 @@ def cell_from_dict(data: Any, folder: Path | None = None) -> Cell:
     check_json_object(data, "file", _TOP)
     found = _entries(data)
     order = _order(found)
+    names = {entry[0] for entry in found}
+    programs: dict[str, CellProgram] = {}
     built = []  # everything checked before the cell is touched
     for k in order:
         full, kind, path, item, parent = found[k]
@@ -396,13 +429,16 @@ def cell_from_dict(data: Any, folder: Path | None = None) -> Cell:
             mount = item.get("mount", [])
             if not isinstance(mount, list):
                 raise InvalidInputError(f"{path}.mount", one_line(mount), "a list of object names")
+            robot = robot_from_dict(item["robot"], f"{path}.robot")
+            if item.get("program") is not None:
+                programs[full] = program_in(item["program"], f"{path}.program", robot, names)
             built.append(
                 (
                     kind,
                     path,
                     dict(
                         name=full,
-                        robot=robot_from_dict(item["robot"], f"{path}.robot"),
+                        robot=robot,
                         base=_pose_in(item.get("base"), f"{path}.base"),
                         parent=parent,
                         tool=_tool(item.get("tool"), f"{path}.tool"),
@@ -439,4 +475,4 @@ def cell_from_dict(data: Any, folder: Path | None = None) -> Cell:
                 cell.add_frame(values["name"], values["pose"], parent=values["parent"])
         except InvalidInputError as error:
             raise error.within(path) from None
-    return cell
+    return (cell, programs) if with_programs else cell

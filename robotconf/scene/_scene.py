@@ -352,7 +352,9 @@ class Scene:
         """Draw points (N, 3) in the base frame, e.g. a workspace, as cloud ``name``
         (replacing one of that name); RGB ``color`` (3,) or (N, 3) in 0…1, point ``size``
         in length units (default 1 % of the robot's size). The view widens to hold them."""
-        self._clouds.add(name, points, color, size or 0.01 * self._size())
+        # three.js sizes points in the viewer's units, which the drawing's scale never
+        # reaches: the size is scaled here as every position is.
+        self._clouds.add(name, points, color, (size or 0.01 * self._size()) / self._size())
         self._keep_in_view(self._clouds.extent())
 
     # -- the page ---------------------------------------------------------------------------

@@ -9,7 +9,6 @@ page is :meth:`Scene.export_html <robotconf.scene.Scene.export_html>`, the URDF 
 
 from __future__ import annotations
 
-import html
 import io
 import re
 import tempfile
@@ -152,12 +151,8 @@ def scene_page(robot: Robot, motion: Motion | None = None, title: str | None = N
     if motion is not None and motion.robot == robot:
         scene.animate(motion)
     with tempfile.TemporaryDirectory(prefix="robotconf-scene-") as scratch:
-        page = scene.export_html(Path(scratch) / "scene.html").read_text(encoding="utf-8")
-    if title is not None and robot.name and title != robot.name:
-        page = page.replace(
-            f"<title>{html.escape(robot.name)}</title>", f"<title>{html.escape(title)}</title>", 1
-        )
-    return page
+        path = scene.export_html(Path(scratch) / "scene.html", title=title)
+        return path.read_text(encoding="utf-8")
 
 
 def step_latex(steps: Derivation, name: str) -> str:

@@ -103,10 +103,10 @@ function rcCreateViewer(MeshCat, element, height, report) {
   // on a laptop without a GPU (software WebGL) that halves the frame rate of a drag,
   // and a kinematics picture needs no shadows.
   viewer.renderer.shadowMap.enabled = false;
-  // The scene's bar plays animations (player.js): meshcat's own "Animations" menu would
-  // be a second player that the bar and the kernel know nothing about.
-  const animations = viewer.animator.folder.domElement.parentElement;
-  if (animations) animations.style.display = "none";
+  // The scene's bar plays animations (player.js) and switches what is shown: meshcat's
+  // own control panel ("Open Controls", with a second player the bar and the kernel know
+  // nothing about) would only cover the pane's corner.
+  viewer.gui.domElement.style.display = "none";
   viewer.rcPlayer = rcCreatePlayer(viewer, report);
   rcCreateLabelLayer(viewer, element);
   let disposed = false;

@@ -287,7 +287,7 @@ class CellScene:
         """Draw a reach map's voxels as points (replacing one shown): unreachable ones
         faint grey, the others from light to dark green by branches (``color_by=
         "manipulability"``: yellow to purple), with a legend; kept in view."""
-        self._reach.show(reach_map, color_by, 0.02 * self._size)
+        self._reach.show(reach_map, color_by, 0.02 * self._size, 1 / self._size)
         self._keep_in_view(self._reach.extent())
 
     def clear_reach_map(self) -> None:

@@ -94,9 +94,12 @@ class ReachMapLayer:
         self.legend = ""
         self._corners = np.zeros((0, 3))
 
-    def show(self, reach_map: ReachMap, color_by: str, fallback_size: float) -> None:
+    def show(
+        self, reach_map: ReachMap, color_by: str, fallback_size: float, scale: float = 1.0
+    ) -> None:
         """Draw ``reach_map`` (replacing one shown); ``fallback_size`` is the point size
-        (length units) of a map of one voxel."""
+        (length units) of a map of one voxel; ``scale`` is the drawing's (viewer units per
+        length unit), which three.js does not apply to a point's size."""
         if not isinstance(reach_map, ReachMap):
             raise InvalidInputError(
                 "reach_map", one_line(reach_map), "a ReachMap from cell.reach_map(...)"
@@ -108,11 +111,12 @@ class ReachMapLayer:
         self.clear()
         points = reach_map.points
         step = voxel_step(reach_map) or fallback_size
+        point = step * scale  # the points' size in the viewer's units
         reached = reach_map.branches > 0
         ops: list[Op] = []
         if (~reached).any():
             grey = np.broadcast_to(UNREACHED_RGB, (int((~reached).sum()), 3))
-            cloud = faint(point_cloud(points[~reached], grey, 0.3 * step), UNREACHED_OPACITY)
+            cloud = faint(point_cloud(points[~reached], grey, 0.3 * point), UNREACHED_OPACITY)
             ops.append(set_object_op(f"{REACH}/unreached", cloud))
         values = (
             reach_map.branches[reached]
@@ -122,7 +126,7 @@ class ReachMapLayer:
         if reached.any():
             colors = reach_colors(values, color_by)
             ops.append(
-                set_object_op(f"{REACH}/reached", point_cloud(points[reached], colors, 0.5 * step))
+                set_object_op(f"{REACH}/reached", point_cloud(points[reached], colors, 0.5 * point))
             )
         self.legend = _legend(int(reached.sum()), len(points), values, color_by)
         anchor = f"{REACH}/legend"
