@@ -45,8 +45,13 @@ def cell_capsules(entry: RobotEntry, world: np.ndarray, q: np.ndarray) -> np.nda
     """A robot's capsules in the cell's frame, (T, L, 2, 3), for q (T, n)."""
     assert entry.links is not None
     local = entry.links.capsules(q)
-    turned = local.reshape(-1, 3) @ world[:3, :3].T  # one (N, 3)·(3, 3) product
-    return (turned + world[:3, 3]).reshape(local.shape)
+    turn, shift = world[:3, :3], world[:3, 3]
+    if np.array_equal(turn, np.eye(3)):
+        return local + shift
+    # Three multiply-adds, not a matrix product: BLAS threads for an (N, 3)·(3, 3)
+    # product cost several times the work on a busy machine.
+    x, y, z = local[..., :1], local[..., 1:2], local[..., 2:]
+    return x * turn[:, 0] + y * turn[:, 1] + z * turn[:, 2] + shift
 
 
 def measure_pairs(
@@ -85,6 +90,7 @@ def measure_pairs(
     columns: list[np.ndarray] = []
     labels: list[tuple[str, str, str, str]] = []
     names = list(robots)
+    known = np.inf  # the least distance measured so far: with per_sample False, a cutoff
     for name in chosen:
         entry = robots[name]
         model = entry.links
@@ -94,15 +100,24 @@ def measure_pairs(
             for k, obj in enumerate(object_names):
                 skip[:, k] = model.static & (obj in entry.mount)
             env = capsule_obstacle_distances(
-                capsules[name], model.radii, obstacles, margin, per_sample, skip
+                capsules[name], model.radii, obstacles, margin, per_sample, skip, known
             )
+            known = min(known, float(env.min(initial=np.inf)))
             columns.append(env.reshape(samples, -1))
             labels += [(name, link, obj, "object") for link in model.names for obj in object_names]
         if model.self_pairs:
             pairs = np.array(model.self_pairs)
             own = capsule_pair_distances(
-                capsules[name], model.radii, capsules[name], model.radii, pairs, margin, per_sample
+                capsules[name],
+                model.radii,
+                capsules[name],
+                model.radii,
+                pairs,
+                margin,
+                per_sample,
+                known,
             )
+            known = min(known, float(own.min(initial=np.inf)))
             columns.append(own)
             labels += [(name, model.names[i], model.names[j], "self") for i, j in model.self_pairs]
     for x, first in enumerate(names):
@@ -112,8 +127,16 @@ def measure_pairs(
             m1, m2 = robots[first].links, robots[second].links
             assert m1 is not None and m2 is not None
             both = capsule_pair_distances(
-                capsules[first], m1.radii, capsules[second], m2.radii, None, margin, per_sample
+                capsules[first],
+                m1.radii,
+                capsules[second],
+                m2.radii,
+                None,
+                margin,
+                per_sample,
+                known,
             )
+            known = min(known, float(both.min(initial=np.inf)))
             columns.append(both.reshape(samples, -1))
             labels += [(first, l1, f"{second}/{l2}", "robot") for l1 in m1.names for l2 in m2.names]
     distance = np.concatenate(columns, axis=1) if columns else np.full((samples, 0), np.inf)

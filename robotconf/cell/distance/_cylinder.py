@@ -33,7 +33,13 @@ import numpy as np
 
 from ._segments import dot
 
-__all__ = ["segment_cylinder_distance", "BAND_SAMPLES", "BAND_MINIMA", "BAND_STEPS"]
+__all__ = [
+    "segment_cylinder_distance",
+    "segment_cylinder_lower_bound",
+    "BAND_SAMPLES",
+    "BAND_MINIMA",
+    "BAND_STEPS",
+]
 
 #: Samples of the band circle, how many of its local minima are refined, and Newton steps.
 BAND_SAMPLES = 64
@@ -164,6 +170,21 @@ def segment_cylinder_distance(
         ],
         axis=1,
     )
+    usable = dot(candidates, candidates) > 0.5
+    values = np.where(usable, _support(candidates, a, b, radius, half_length), np.inf)
+    return -np.min(values, axis=1)
+
+
+def segment_cylinder_lower_bound(
+    a: np.ndarray, b: np.ndarray, radius: np.ndarray, half_length: np.ndarray
+) -> np.ndarray:
+    """A lower bound of :func:`segment_cylinder_distance`, shape (N,), without the band.
+
+    ``−min F`` over the closed-form directions alone: ``F`` at fewer directions can only
+    be larger, so the bound never exceeds the distance, and it equals it whenever the
+    minimizer is not on the band. About a third of the work of the distance.
+    """
+    candidates = _closed_form_directions(a, b, radius, half_length)
     usable = dot(candidates, candidates) > 0.5
     values = np.where(usable, _support(candidates, a, b, radius, half_length), np.inf)
     return -np.min(values, axis=1)

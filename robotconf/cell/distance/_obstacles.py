@@ -4,17 +4,16 @@
 
 Exact distances (:mod:`._box`, :mod:`._cylinder`, :mod:`._triangle`, :mod:`._segments`)
 cost tens of operations per pair; most pairs of a motion are far apart. So every pair
-first gets cheap bounds from bounding balls — the capsule's ball about its midpoint
-(half its length plus its radius) and the object's ball about its centre:
-
-    lower bound  |m − c| − (ℓ/2 + r) − R_out   ≤ sd ≤   |m − c| + ℓ/2 − r − R_in   upper bound
-
-(``R_in``: a ball about the centre inside the object; for a mesh ``−R_out``). The centre
-distances of all pairs come from one matrix product. Only pairs whose lower bound does not
-exceed the cutoff are measured exactly; the others are reported as ``+inf`` ("farther
-than the cutoff"). The cutoff is a margin, or the least upper bound of each sample (every
-sample's least distance exact), or of the whole motion (only its least distance exact:
-``cell.check`` asks for contacts and the motion's least clearance, which prunes far more).
+first meets cheap lower bounds of its signed distance — a box around each link over a
+chunk of samples against a box around each object, the same per sample, then the
+separation along the object's own axes (for two capsules: along the line through their
+midpoints). Only pairs whose bound does not exceed the cutoff are measured exactly; the
+others are reported as ``+inf`` ("farther than the cutoff"). The cutoff is a margin, or
+each sample's least distance measured on its most promising pair (every sample's least
+distance exact), or the motion's: the least exact distance over a few most promising
+pairs and the pairs measured before (``known``), so only the motion's least distance is
+exact. ``cell.check`` asks for that, and of the pairs in contact only when they are and
+how deep each contact goes (:mod:`._contacts`), which prunes far more.
 """
 
 from __future__ import annotations
@@ -25,7 +24,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._box import segment_box_distance
-from ._cylinder import segment_cylinder_distance
+from ._contacts import contacts_sparingly
+from ._cylinder import segment_cylinder_distance, segment_cylinder_lower_bound
 from ._segments import point_segment_distance, segment_segment_distance
 from ._triangle import segment_triangle_distance
 
@@ -119,6 +119,49 @@ class Obstacles:
         )
         return out - r
 
+    def upper_bound(self, a: np.ndarray, b: np.ndarray, r: np.ndarray, index: np.ndarray):
+        """A cheap upper bound of each capsule's signed distance to objects ``index``, (N,).
+
+        The signed distance of one point of the segment (the one nearest the object's
+        centre) to a box, cylinder or sphere, less the radius: a part of a body is never
+        deeper in, nor farther from, a convex object than the whole. A mesh: ``inf``.
+        """
+        la, lb = self._local(a, index), self._local(b, index)
+        d = lb - la
+        length2 = np.einsum("nk,nk->n", d, d)
+        with np.errstate(divide="ignore", invalid="ignore"):
+            t = np.clip(-np.einsum("nk,nk->n", la, d) / length2, 0.0, 1.0)
+        p = la + np.where(length2 > 0.0, t, 0.0)[:, None] * d
+        kinds = self.kinds[index]
+        q = np.abs(p) - 0.5 * self._box[index]
+        box = np.sqrt(np.einsum("nk,nk->n", *(2 * (np.maximum(q, 0.0),)))) + np.minimum(
+            q.max(axis=1), 0.0
+        )
+        across = np.hypot(p[:, 0], p[:, 1]) - self._cyl[index, 0]
+        along = np.abs(p[:, 2]) - 0.5 * self._cyl[index, 1]
+        cylinder = np.hypot(np.maximum(across, 0.0), np.maximum(along, 0.0)) + np.minimum(
+            np.maximum(across, along), 0.0
+        )
+        ball = np.sqrt(np.einsum("nk,nk->n", p, p)) - self._sphere[index]
+        out = np.select(
+            [kinds == "box", kinds == "cylinder", kinds == "sphere"], [box, cylinder, ball], np.inf
+        )
+        return out - r
+
+    def tighter_bound(self, a: np.ndarray, b: np.ndarray, r: np.ndarray, index: np.ndarray):
+        """A lower bound dearer than :meth:`lower_bound`, (N,): a cylinder's without its
+        band search (:func:`~._cylinder.segment_cylinder_lower_bound`); ``−inf`` else."""
+        out = np.full(len(index), -np.inf)
+        k = np.flatnonzero(self.kinds[index] == "cylinder")
+        if len(k):
+            obj = index[k]
+            la, lb = self._local(a[k], obj), self._local(b[k], obj)
+            out[k] = (
+                segment_cylinder_lower_bound(la, lb, self._cyl[obj, 0], 0.5 * self._cyl[obj, 1])
+                - r[k]
+            )
+        return out
+
     def exact(self, a: np.ndarray, b: np.ndarray, r: np.ndarray, index: np.ndarray) -> np.ndarray:
         """Signed distances of capsules (a, b, r) to objects ``index``, shape (N,)."""
         out = np.empty(len(index))
@@ -209,6 +252,7 @@ def capsule_obstacle_distances(
     margin: float = -np.inf,
     per_sample: bool = True,
     skip: np.ndarray | None = None,
+    known: float = np.inf,
 ) -> np.ndarray:
     """Signed distances of capsules to objects, shape (T, L, O); ``inf`` where pruned.
 
@@ -230,10 +274,15 @@ def capsule_obstacle_distances(
         True: each sample's cutoff is ``max(margin, d)`` with ``d`` the exact distance of
         its chunk's most promising pair, so every sample's least distance is exact.
         False: one cutoff, ``max(margin, U)`` with U the least exact distance over the
-        :data:`PROBES` most promising chunk pairs, so only the motion's least distance
-        (and every pair closer than ``margin``) is exact.
+        :data:`PROBES` most promising chunk pairs (and ``known``), so only the motion's
+        least distance is exact; of the pairs closer than ``margin``, each contact's
+        deepest sample is exact and the others may hold an upper bound below ``margin``
+        (:func:`~._contacts.contacts_sparingly`).
     skip : ndarray of bool, shape (L, O), optional
         Pairs never measured (``inf``): a robot's base links and what it stands on.
+    known : float
+        With ``per_sample`` False: a distance already measured elsewhere in the motion
+        (other pairs'), so pairs provably farther than it cannot hold the least one.
     """
     t, links = segments.shape[:2]
     count = len(obstacles)
@@ -257,15 +306,15 @@ def capsule_obstacle_distances(
         rows, cols = _expand(
             (np.arange(chunks) * links + best // count)[usable], (best % count)[usable], links, t
         )
-        known = np.full(t, np.inf)
-        known[rows // links] = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
-        limit = np.maximum(known, margin)
+        measured = np.full(t, np.inf)
+        measured[rows // links] = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
+        limit = np.maximum(measured, margin)
     else:
         order = np.argsort(coarse.ravel())[:PROBES]
         order = order[np.isfinite(coarse.ravel()[order])]
         rows, cols = _expand(order // count, order % count, links, t)
         found = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
-        limit = np.full(t, max(float(np.min(found, initial=np.inf)), margin))
+        limit = np.full(t, max(float(np.min(found, initial=known)), margin))
     # The bounds and the exact distance round differently: a bound equal to the cutoff
     # may come out a few ulps above it, so every stage allows the round-off of the scene.
     size = max(
@@ -291,7 +340,22 @@ def capsule_obstacle_distances(
     bound = obstacles.lower_bound(flat_a[rows], flat_b[rows], r[rows], cols)
     keep = bound <= sample_limit
     rows, cols = rows[keep], cols[keep]
-    out.reshape(-1, count)[rows, cols] = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
+    if per_sample or not np.isfinite(margin):
+        exact = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
+    else:
+        tolerance = 64.0 * _EPS * (1.0 + size + abs(margin))
+        exact = contacts_sparingly(
+            obstacles,
+            (flat_a[rows], flat_b[rows], r[rows]),
+            rows,
+            cols,
+            bound[keep],
+            sample_limit[keep],
+            links,
+            margin,
+            tolerance,
+        )
+    out.reshape(-1, count)[rows, cols] = exact
     return out
 
 
@@ -303,6 +367,7 @@ def capsule_pair_distances(
     pairs: np.ndarray | None = None,
     margin: float = -np.inf,
     per_sample: bool = True,
+    known: float = np.inf,
 ) -> np.ndarray:
     """Signed distances between two sets of capsules per sample; ``inf`` where pruned.
 
@@ -312,14 +377,14 @@ def capsule_pair_distances(
     first_radii, second_radii : ndarray, shapes (L1,), (L2,)
     pairs : ndarray of int, shape (P, 2), optional
         Only these (i, j); the result is then (T, P), else (T, L1, L2).
-    margin, per_sample
+    margin, per_sample, known
         As for :func:`capsule_obstacle_distances`.
     """
     t = first.shape[0]
     if pairs is None:
         grid = np.indices((first.shape[1], second.shape[1])).reshape(2, -1).T
         return capsule_pair_distances(
-            first, first_radii, second, second_radii, grid, margin, per_sample
+            first, first_radii, second, second_radii, grid, margin, per_sample, known
         ).reshape(t, first.shape[1], second.shape[1])
     out = np.full((t, len(pairs)), np.inf)
     if not len(pairs) or not t:
@@ -333,9 +398,12 @@ def capsule_pair_distances(
         return np.minimum(a, b) - grow, np.maximum(a, b) + grow  # (T, L, 3) each
 
     low1, high1 = boxes(first, first_radii)
-    low2, high2 = boxes(second, second_radii)
     chunk_low1, chunk_high1 = _chunk_boxes(low1, high1, CHUNK)
-    chunk_low2, chunk_high2 = _chunk_boxes(low2, high2, CHUNK)
+    if second is first and second_radii is first_radii:  # a robot's own pairs
+        low2, high2, chunk_low2, chunk_high2 = low1, high1, chunk_low1, chunk_high1
+    else:
+        low2, high2 = boxes(second, second_radii)
+        chunk_low2, chunk_high2 = _chunk_boxes(low2, high2, CHUNK)
     chunks = len(chunk_low1) // first.shape[1]
     c1 = np.arange(chunks)[:, None] * first.shape[1] + i[None, :]
     c2 = np.arange(chunks)[:, None] * second.shape[1] + j[None, :]
@@ -361,7 +429,7 @@ def capsule_pair_distances(
     else:
         order = np.argsort(coarse.ravel())[:PROBES]
         sample, pair = expand(*np.divmod(order, len(pairs)))
-        limit = np.full(t, max(float(exact(sample, pair).min()), margin))
+        limit = np.full(t, max(float(exact(sample, pair).min(initial=known)), margin))
     size = max(
         float(np.abs(low1).max()),
         float(np.abs(high1).max()),
@@ -378,5 +446,31 @@ def capsule_pair_distances(
     ).max(axis=1)
     keep = gap <= limit[sample]
     sample, pair = sample[keep], pair[keep]
+    keep = _axis_separation(first[sample, i[pair]], second[sample, j[pair]], r[pair])
+    keep = keep <= limit[sample]
+    sample, pair = sample[keep], pair[keep]
     out[sample, pair] = exact(sample, pair)
     return out
+
+
+def _axis_separation(first: np.ndarray, second: np.ndarray, radii: np.ndarray) -> np.ndarray:
+    """A lower bound of capsule pairs' signed distances, (N,), for segments (N, 2, 3) twice.
+
+    Their separation along two axes, the larger: the line through the segments'
+    midpoints, and the common normal ``d1 × d2`` (the distance itself when the nearest
+    points lie inside both segments). Along an axis ``u`` the capsules span
+    ``m·u ± (|d·u|/2 + r)``. Tighter than boxes for links side by side at a slant, as a
+    robot's wrist links are; ``−inf`` along an axis of length 0.
+    """
+    d1, d2 = first[:, 1] - first[:, 0], second[:, 1] - second[:, 0]
+    between = 0.5 * (second[:, 0] + second[:, 1] - first[:, 0] - first[:, 1])
+
+    def along(axis: np.ndarray) -> np.ndarray:
+        length = np.sqrt(np.einsum("nk,nk->n", axis, axis))
+        gap = np.abs(np.einsum("nk,nk->n", between, axis)) - 0.5 * (
+            np.abs(np.einsum("nk,nk->n", d1, axis)) + np.abs(np.einsum("nk,nk->n", d2, axis))
+        )
+        with np.errstate(divide="ignore", invalid="ignore"):
+            return np.where(length > 0.0, gap / length, -np.inf)
+
+    return np.maximum(along(between), along(np.cross(d1, d2))) - radii
