@@ -10,7 +10,7 @@ import sympy
 
 import robotconf as rc
 from robotconf import InvalidInputError
-from robotconf.teaching._check_result import format_decimal, show_entry, show_expected
+from robotconf.teaching.reading import format_decimal, show_entry, show_expected
 
 #: A1 of the paper robot with (1,1) using the wrong joint and (2,1) of the wrong sign.
 WRONG_A1 = [

@@ -37,45 +37,62 @@ Student text (a whitelist parser: nothing is evaluated)
 '0.3'
 """
 
-from ._answer_checks import check_angle, check_value, check_vector
-from ._answer_checks_assert import (
+from .checks import (
+    AnswerCheck,
+    DHTableCheck,
+    MatrixCheck,
     assert_angle,
+    assert_dh_table,
     assert_interval,
+    assert_matrix,
     assert_set,
     assert_value,
     assert_vector,
+    check_angle,
+    check_dh_table,
+    check_interval,
+    check_matrix,
+    check_set,
+    check_value,
+    check_vector,
+    parse_dh_rows,
 )
-from ._answer_checks_interval import check_interval
-from ._answer_checks_result import AnswerCheck
-from ._answer_checks_sets import check_set
-from ._check_result import MatrixCheck
-from ._checker import assert_matrix, check_matrix
-from ._derivation import Derivation, derivation
-from ._dh_table_check import DHTableCheck, assert_dh_table, check_dh_table
-from ._dh_table_text import parse_dh_rows
-from ._expected import ExpectedMatrix, as_expected, evaluate, expected_matrix, sample_points
-from ._formatting import format_number, latex_text, matrix_grid, matrix_latex
-from ._ik_answers import assert_ik_solution, check_ik_solution
-from ._ik_answers_result import IK_DIAGNOSES, IKCheck
-from ._ik_answers_sets import assert_ik_solutions, check_ik_solutions
-from ._mistakes import ROTATION_PATTERN, Candidate, generic_candidates, is_rotation_like
-from ._profile_checks import assert_profile, check_profile
-from ._profile_checks_forms import PROFILE_FORMS
-from ._profile_checks_slips import PROFILE_DIAGNOSES
-from ._profile_checks_task import ProfileTask
-from ._step import DerivationStep
-from ._student_parser import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
-from ._symbolic import (
+from .derivation import (
+    Derivation,
+    DerivationStep,
+    ExpectedMatrix,
+    SymbolicChain,
+    as_expected,
+    derivation,
     dh_factors,
     elementary_matrix,
+    evaluate,
     exact_number,
+    expected_matrix,
+    format_number,
+    latex_text,
     link_factors,
+    matrix_grid,
+    matrix_latex,
     module_matrix,
+    sample_points,
+    simplify_matrix,
     sine_entries,
+    symbolic_chain,
+    symbolic_fits,
 )
-from ._symbolic_chain import SymbolicChain, simplify_matrix, symbolic_chain
-from ._symbolic_limits import symbolic_fits
-from ._variants import Variant
+from .diagnosis import ROTATION_PATTERN, Candidate, generic_candidates, is_rotation_like
+from .ik_answers import (
+    IK_DIAGNOSES,
+    IKCheck,
+    assert_ik_solution,
+    assert_ik_solutions,
+    check_ik_solution,
+    check_ik_solutions,
+)
+from .profiles import PROFILE_DIAGNOSES, PROFILE_FORMS, ProfileTask, assert_profile, check_profile
+from .reading import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
+from .variants import Variant
 
 __all__ = [
     # derivations

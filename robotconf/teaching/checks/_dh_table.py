@@ -1,0 +1,431 @@
+"""Check a student's DH table by the robot it describes, not by its numbers.
+
+Frame assignment leaves choices (where x_0 points, how an offset along two parallel z axes
+is split between rows, α = π or −π), so two correct tables may differ in their numbers.
+What must agree is the robot: at seeded random joint values, every joint's axis (as a
+line with a direction: Plücker coordinates ``(u, p × u)``, so a joint turning backwards
+counts as wrong) and the end-effector position. These are exactly the columns of the
+end-effector Jacobian plus the position, so a table passes when it moves the tool like
+the robot does for every ``q``.
+
+A wrong table is explained by repairing it: each usual mistake is undone in turn (the
+other convention, degrees, the sign of one α, a and d swapped in one row, a θ offset of
+a quarter turn, …) and the first repair that gives the robot names the mistake. Nothing
+is evaluated: text goes through the whitelist parser.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Iterator, Mapping
+from dataclasses import dataclass
+from typing import Any
+
+import numpy as np
+
+from ..._errors import InvalidInputError
+from ..._validation import check_finite_number, check_integer
+from ...kinematics import (
+    Robot,
+    characteristic_length,
+    check_convention,
+    check_parameter_vector,
+    joint_axes,
+)
+from ..reading._wrapper import answer_check, passed
+from ._dh_table_text import (
+    NO_ANSWER,
+    DHRow,
+    convention_hint,
+    degrees_hint,
+    generic_hint,
+    joint_type_hint,
+    parse_dh_rows,
+    repair_hint,
+    row_count_hint,
+)
+
+__all__ = ["DHTableCheck", "check_dh_table", "assert_dh_table"]
+
+_TURNS = (np.pi / 2, np.pi, -np.pi / 2)
+_TWISTS = (0.0, np.pi / 2, -np.pi / 2, np.pi)
+
+
+@dataclass(frozen=True, eq=False)
+class DHTableCheck:
+    """The verdict on one DH table.
+
+    Attributes
+    ----------
+    ok : bool
+        The table describes the robot: the same joint axes (line and direction) and the
+        same end-effector position at every sampled ``q``.
+    hints : list of str
+        What is most likely wrong, without giving the right numbers away (unless
+        ``reveal=True``).
+    diagnosis : str or None
+        The code of the recognised mistake: ``"no_answer"``, ``"row_count"``,
+        ``"joint_variable"``, ``"joint_direction"``, ``"joint_type"``, ``"convention"``,
+        ``"degrees"``, ``"alpha_sign"``, ``"swapped_a_d"``, ``"theta_offset"``,
+        ``"twist"``, ``"a_sign"``, ``"d_sign"``, ``"axis"`` (a z axis not along its
+        joint's axis), ``"reversed_axis"`` (along it, pointing the other way),
+        ``"end_effector"``; ``None`` when ok.
+    wrong_joints : list of int
+        1-based joints whose axis the table puts in the wrong place.
+    rows : tuple of (θ, d, a, α, joint)
+        The table as understood (offsets of θ and d, radians); empty when it could not
+        be read as DH rows.
+    convention : str
+        The convention the table was read in.
+    """
+
+    ok: bool
+    hints: list[str]
+    diagnosis: str | None
+    wrong_joints: list[int]
+    rows: tuple[DHRow, ...]
+    convention: str
+
+    def __bool__(self) -> bool:
+        return self.ok
+
+    def __str__(self) -> str:
+        head = f"DH table ({self.convention}): "
+        if self.ok:
+            return head + "correct."
+        return "\n".join([head + "not yet right.", *(f"- {hint}" for hint in self.hints)])
+
+    def __repr__(self) -> str:
+        return f"<DHTableCheck ok={self.ok} diagnosis={self.diagnosis!r}>"
+
+    def _repr_html_(self) -> str:
+        import html
+
+        head, *hints = str(self).split("\n")
+        mark = "✔" if self.ok else "✗"
+        items = "".join(f"<li>{html.escape(hint[2:])}</li>" for hint in hints)
+        return (
+            f"<div><b>{mark} {html.escape(head)}</b>"
+            + (f"<ul>{items}</ul>" if items else "")
+            + "</div>"
+        )
+
+
+@dataclass(frozen=True)
+class _Reference:
+    """The robot to match, sampled once: axes and end-effector at K joint values."""
+
+    letters: tuple[str, ...]
+    q: np.ndarray  # (K, m) joint values, one column per joint
+    direction: np.ndarray  # (K, m, 3)
+    moment: np.ndarray  # (K, m, 3)
+    end_effector: np.ndarray  # (K, 3)
+    scale: float
+    tol: float
+
+
+@dataclass(frozen=True)
+class _Match:
+    wrong: tuple[int, ...]  # 0-based joints with a wrong axis
+    first_reversed: bool  # the first wrong axis is the right line, pointing the other way
+    end_effector_ok: bool
+
+    @property
+    def axes_ok(self) -> bool:
+        return not self.wrong
+
+    @property
+    def ok(self) -> bool:
+        return self.axes_ok and self.end_effector_ok
+
+
+def _axes(robot: Robot, q: np.ndarray, columns: Any) -> tuple[np.ndarray, np.ndarray]:
+    axes = joint_axes(robot, q)
+    direction = axes.direction[:, columns]
+    return direction, np.cross(axes.point[:, columns], direction)
+
+
+def _reference(robot: Robot, samples: int, seed: int, tol: float) -> _Reference:
+    letters_all = joint_axes(robot, robot.q).joints
+    columns = np.array([i for i, letter in enumerate(letters_all) if letter is not None])
+    letters = tuple(str(letters_all[i]) for i in columns)
+    if not letters:
+        raise InvalidInputError("expected", robot, "a robot with at least one joint")
+    scale = characteristic_length(robot)
+    rng = np.random.default_rng(seed)
+    joints = np.zeros((samples + 1, len(letters)))  # sample 0: the zero position
+    for j, letter in enumerate(letters):
+        span = np.pi if letter == "R" else 0.5 * scale
+        joints[1:, j] = rng.uniform(-span, span, samples)
+    q_full = np.tile(robot.q, (samples + 1, 1))
+    q_full[:, columns] = joints
+    direction, moment = _axes(robot, q_full, columns)
+    return _Reference(letters, joints, direction, moment, robot.end_effector(q_full), scale, tol)
+
+
+def _compare(
+    ref: _Reference, rows: tuple[DHRow, ...], convention: str, end_effector: Any
+) -> _Match | None:
+    """How the robot of ``rows`` differs from the reference; None if it cannot be built."""
+    try:
+        robot = Robot.from_dh(rows, convention=convention, end_effector=end_effector)
+    except InvalidInputError:
+        return None
+    direction, moment = _axes(robot, ref.q, slice(None))
+    revolute = np.array([letter == "R" for letter in ref.letters])
+    # A prismatic joint's line does not matter, only its direction: no moment for it.
+    moment_gap = np.where(revolute, np.abs(moment - ref.moment).max(axis=(0, 2)), 0.0)
+    moment_flip = np.where(revolute, np.abs(moment + ref.moment).max(axis=(0, 2)), 0.0)
+    same = (np.abs(direction - ref.direction).max(axis=(0, 2)) <= ref.tol) & (
+        moment_gap <= ref.tol * ref.scale
+    )
+    flipped = (np.abs(direction + ref.direction).max(axis=(0, 2)) <= ref.tol) & (
+        moment_flip <= ref.tol * ref.scale
+    )
+    wrong = tuple(int(j) for j in np.flatnonzero(~same))
+    gap = np.abs(robot.end_effector(ref.q) - ref.end_effector).max()
+    return _Match(wrong, bool(wrong) and bool(flipped[wrong[0]]), gap <= ref.tol * ref.scale)
+
+
+def _with(row: DHRow, **changes: float) -> DHRow:
+    theta, d, a, alpha, joint = row
+    new = {"theta": theta, "d": d, "a": a, "alpha": alpha, **changes}
+    return (new["theta"], new["d"], new["a"], new["alpha"], joint)
+
+
+def _row_repairs(row: DHRow) -> Iterator[tuple[str, DHRow]]:
+    """The single-row mistakes, undone: (code, the repaired row)."""
+    theta, d, a, alpha, _ = row
+    flat = abs(np.sin(alpha)) < 1e-9  # α = 0 or ±π: its sign changes nothing
+    if not flat:
+        yield "alpha_sign", _with(row, alpha=-alpha)
+    if not np.isclose(a, d):
+        yield "swapped_a_d", _with(row, a=d, d=a)
+    for turn in _TURNS:
+        yield "theta_offset", _with(row, theta=theta + turn)
+    for twist in _TWISTS:
+        if abs(np.sin(alpha - twist)) > 1e-9 or np.cos(alpha - twist) < 0:
+            yield "twist", _with(row, alpha=twist)
+    if a != 0:
+        yield "a_sign", _with(row, a=-a)
+    if d != 0:
+        yield "d_sign", _with(row, d=-d)
+
+
+_ROW_ORDER = ("alpha_sign", "swapped_a_d", "theta_offset", "twist", "a_sign", "d_sign")
+#: Repaired tables tried at most (each builds and samples a robot): a 64-row table is
+#: judged in about a second, a course-sized one in milliseconds.
+_MAX_REPAIRS = 200
+
+
+def _diagnose(
+    ref: _Reference,
+    rows: tuple[DHRow, ...],
+    convention: str,
+    end_effector: Any,
+    own: _Match,
+    reveal: bool,
+) -> tuple[str, str]:
+    """(code, hint) of the first repair that gives the robot, else a generic hint."""
+    other = "modified" if convention == "standard" else "standard"
+    swapped = _compare(ref, rows, other, end_effector)
+    if swapped is not None and (swapped.ok or (swapped.axes_ok and not own.axes_ok)):
+        return "convention", convention_hint(convention, other, swapped.ok)
+    if any(abs(row[0]) > 2 * np.pi + 1e-9 or abs(row[3]) > 2 * np.pi + 1e-9 for row in rows):
+        radians = tuple(_with(r, theta=np.radians(r[0]), alpha=np.radians(r[3])) for r in rows)
+        match = _compare(ref, radians, convention, end_effector)
+        if match is not None and match.ok:
+            return "degrees", degrees_hint()
+    # Joint j's axis is placed by rows 1..j-1 (standard) or 1..j (modified): a one-row
+    # mistake that misplaces the first wrong axis sits in one of those rows.
+    suspects = len(rows)
+    if own.wrong:
+        suspects = min(suspects, own.wrong[0] + (0 if convention == "standard" else 1))
+    repairs = [
+        (code, r, repaired)
+        for r, row in enumerate(rows[:suspects])
+        for code, repaired in _row_repairs(row)
+    ]
+    # A zero offset between joints on one line fits either row; the later row is where a
+    # forgotten quarter turn (x_i against x_(i-1)) is usually missing.
+    repairs.sort(
+        key=lambda item: (
+            _ROW_ORDER.index(item[0]),
+            -item[1] if item[0] == "theta_offset" else item[1],
+        )
+    )
+    for code, r, repaired in repairs[:_MAX_REPAIRS]:
+        table = rows[:r] + (repaired,) + rows[r + 1 :]
+        match = _compare(ref, table, convention, end_effector)
+        if match is not None and match.ok:
+            return code, repair_hint(code, r, convention, repaired if reveal else None)
+    first = own.wrong[0] if own.wrong else None
+    tool = bool(np.any(np.asarray(end_effector) != 0))
+    return generic_hint(first, own.first_reversed, convention, len(rows), tool)
+
+
+@answer_check
+def check_dh_table(
+    answer: Any,
+    expected: Any,
+    *,
+    convention: str = "standard",
+    end_effector: Any = (0.0, 0.0, 0.0),
+    values: Mapping[str, Any] | None = None,
+    tol: float = 1e-3,
+    samples: int = 8,
+    seed: int = 0,
+    reveal: bool = False,
+) -> DHTableCheck:
+    """Check a DH table against a robot: right when it describes the same robot.
+
+    Parameters
+    ----------
+    answer : list of rows, str or None
+        One row per joint: ``(θ, d, a, α)`` with the joint variable in θ (revolute) or d
+        (prismatic), e.g. ``[("q1", 20, 0, "-pi/2"), ("q2", 0, 30, 0)]``; or robotconf
+        rows ``(θ, d, a, α, "R"/"P")`` with θ and d as offsets; or the same as text
+        ``"[[q1, 20, 0, -pi/2], [q2, 0, 30, 0]]"``. Text is parsed by the whitelist
+        parser (never evaluated). Angles in radians. ``None``: not answered yet.
+    expected : Robot or list of rows
+        The robot the table must describe (modules or DH links, any convention), or its
+        table in ``convention`` with the tool point ``end_effector``.
+    convention : {"standard", "modified"}
+        The convention the exercise asks for; the answer is read in it.
+    end_effector : array-like, shape (3,)
+        The tool point in the answer's last frame (length): 0 for a standard table
+        whose last frame sits at the tool; in a modified table the last link's length
+        goes here, e.g. ``(l3, 0, 0)``.
+    values : dict of str to float, optional
+        Names a student may write instead of numbers, e.g. ``{"l1": 20}``.
+    tol : float
+        Relative tolerance, 0 < tol < 1: axis directions within ``tol``, positions and
+        axis moments within ``tol`` times the robot's size (the sum of its lengths).
+    samples : int
+        Random joint values compared (besides the zero position), ≥ 1.
+    seed : int
+        Seed of those joint values.
+    reveal : bool
+        Whether a hint may show a corrected row.
+
+    Returns
+    -------
+    DHTableCheck
+
+    Raises
+    ------
+    InvalidInputError
+        For an answer that is not a table (not a list of rows of 4 or 5 entries, text
+        outside the whitelist, entries that are not real numbers), a bad expected robot,
+        convention, tolerance or sample count.
+
+    Examples
+    --------
+    The paper's R_zR_yR_y arm (modules) and its standard table from lesson 5; another
+    correct table splits nothing differently but writes α as ``-pi/2`` text:
+
+    >>> import robotconf as rc
+    >>> paper = rc.preset("paper")
+    >>> check_dh_table([("q1", 20, 0, "-pi/2"), ("q2", 0, 30, 0), ("q3", 0, 40, 0)], paper).ok
+    True
+    >>> result = check_dh_table([("q1", 20, 0, "pi/2"), ("q2", 0, 30, 0), ("q3", 0, 40, 0)], paper)
+    >>> result.ok, result.diagnosis, result.wrong_joints
+    (False, 'alpha_sign', [2, 3])
+    >>> check_dh_table(None, paper).hints
+    ['No answer yet: replace None with your DH table, one row per joint.']
+    """
+    return _check(answer, expected, convention, end_effector, values, tol, samples, seed, reveal)
+
+
+def _expected_robot(
+    expected: Any, convention: str, end_effector: Any, values: Mapping[str, Any] | None
+) -> Robot:
+    if isinstance(expected, Robot):
+        return expected
+    parsed = parse_dh_rows(expected, values, field="expected")
+    if parsed.issues:
+        raise InvalidInputError("expected", expected, "a DH table", problem=parsed.issues[0][1])
+    return Robot.from_dh(parsed.rows, convention=convention, end_effector=end_effector)
+
+
+def _check(
+    answer: Any,
+    expected: Any,
+    convention: str,
+    end_effector: Any,
+    values: Mapping[str, Any] | None,
+    tol: float,
+    samples: int,
+    seed: int,
+    reveal: bool,
+) -> DHTableCheck:
+    convention = check_convention(convention)
+    tol = check_finite_number(tol, "tol")
+    if not 0 < tol < 1:
+        raise InvalidInputError("tol", tol, "a number between 0 and 1 (relative tolerance)")
+    samples = check_integer(samples, "samples", 1, 1000, "an integer from 1 to 1000")
+    seed = check_integer(seed, "seed", 0)
+    end_effector = check_parameter_vector(end_effector, "end_effector")
+    robot = _expected_robot(expected, convention, end_effector, values)
+    ref = _reference(robot, samples, seed, tol)
+
+    def fail(code: str, hints: list[str], rows: Any = (), wrong: Any = ()) -> DHTableCheck:
+        joints = sorted(j + 1 for j in wrong)
+        return DHTableCheck(False, hints, code, joints, tuple(rows), convention)
+
+    if answer is None:
+        return fail("no_answer", [NO_ANSWER])
+    parsed = parse_dh_rows(answer, values)
+    if parsed.issues:
+        return fail(parsed.issues[0][0], [hint for _, hint in parsed.issues])
+    rows = parsed.rows
+    if len(rows) != len(ref.letters):
+        return fail("row_count", [row_count_hint(len(rows), len(ref.letters))], rows)
+    for r, (row, letter) in enumerate(zip(rows, ref.letters, strict=True)):
+        if row[4] != letter:
+            return fail("joint_type", [joint_type_hint(r, letter)], rows)
+    own = _compare(ref, rows, convention, end_effector)
+    if own is None:  # a table the robot class refuses (numbers beyond 1e150)
+        raise InvalidInputError("answer", answer, "numbers of at most 1e150")
+    if own.ok:
+        return DHTableCheck(True, [], None, [], rows, convention)
+    code, hint = _diagnose(ref, rows, convention, end_effector, own, reveal)
+    return fail(code, [hint], rows, own.wrong)
+
+
+def assert_dh_table(answer: Any, expected: Any, **options: Any) -> DHTableCheck:
+    """Like :func:`check_dh_table`, but raise ``AssertionError`` with the hints if wrong.
+
+    Made for the check cells of exercises (nbgrader autograder cells): the message is
+    what the student reads.
+
+    Parameters
+    ----------
+    answer, expected
+        As in :func:`check_dh_table`.
+    **options
+        ``convention``, ``end_effector``, ``values``, ``tol``, ``samples``, ``seed``,
+        ``reveal``.
+
+    Returns
+    -------
+    DHTableCheck
+        When the table is right.
+
+    Raises
+    ------
+    AssertionError
+        When it is wrong or missing.
+
+    Examples
+    --------
+    >>> import robotconf as rc
+    >>> arm = rc.Robot.from_dh([(0, 0, 40, 0, "R"), (0, 0, 30, 0, "R")])
+    >>> assert_dh_table([("q1", 0, 40, 0), ("q2", 0, 30, 0)], arm).ok
+    True
+    >>> assert_dh_table([("q1", 40, 0, 0), ("q2", 0, 30, 0)], arm)
+    Traceback (most recent call last):
+    ...
+    AssertionError: DH table (standard): not yet right.
+    - Row 1: a1 and d1 look swapped. ...
+    """
+    return passed(check_dh_table(answer, expected, **options))
