@@ -58,6 +58,7 @@ from .checks import (
     parse_dh_rows,
 )
 from .derivation import (
+    SYMBOLIC_TOO_LONG,
     Derivation,
     DerivationStep,
     ExpectedMatrix,
@@ -114,6 +115,7 @@ __all__ = [
     "exact_number",
     "sine_entries",
     "symbolic_fits",
+    "SYMBOLIC_TOO_LONG",
     # expected answers and the checker
     "expected_matrix",
     "ExpectedMatrix",

@@ -12,7 +12,8 @@ Symbolic chain (an independent second implementation of the matrices, in sympy)
     :func:`elementary_matrix`, :func:`dh_factors`, :func:`link_factors`,
     :func:`exact_number`, :func:`sine_entries`, :func:`simplify_matrix`
 What the symbolic derivation costs
-    :func:`symbolic_fits`, :func:`symbolic_cost`, :data:`SYMBOLIC_COST_LIMIT`
+    :func:`symbolic_fits`, :func:`symbolic_cost`, :data:`SYMBOLIC_COST_LIMIT`,
+    :data:`SYMBOLIC_TOO_LONG` (why a longer chain is refused)
 Expected answers (an exercise's matrix, with the context the diagnoses read)
     :func:`expected_matrix`, :class:`ExpectedMatrix`, :func:`as_expected`,
     :func:`evaluate`, :func:`sample_points`
@@ -34,7 +35,7 @@ from ._symbolic import (
     sine_entries,
 )
 from ._symbolic_chain import SymbolicChain, simplify_matrix, symbolic_chain
-from ._symbolic_limits import SYMBOLIC_COST_LIMIT, symbolic_cost, symbolic_fits
+from ._symbolic_limits import SYMBOLIC_COST_LIMIT, SYMBOLIC_TOO_LONG, symbolic_cost, symbolic_fits
 
 __all__ = [
     "derivation",
@@ -56,6 +57,7 @@ __all__ = [
     "symbolic_fits",
     "symbolic_cost",
     "SYMBOLIC_COST_LIMIT",
+    "SYMBOLIC_TOO_LONG",
     "expected_matrix",
     "ExpectedMatrix",
     "as_expected",

@@ -29,6 +29,12 @@ from ._formatting import format_number, latex_text
 from ._step import DerivationStep, step_name
 from ._symbolic import dh_values, exact_number
 from ._symbolic_chain import SymbolicChain, symbolic_chain
+from ._symbolic_limits import (
+    SYMBOLIC_COST_LIMIT,
+    SYMBOLIC_TOO_LONG,
+    symbolic_cost,
+    symbolic_fits,
+)
 
 if TYPE_CHECKING:  # pragma: no cover
     from ...kinematics import Robot
@@ -154,6 +160,7 @@ def derivation(
     lengths: bool = False,
     precision: int = 4,
     simplify: bool = True,
+    allow_slow: bool = False,
 ) -> Derivation:
     """Step-by-step forward kinematics: every ``A_i``, every ``M_i`` and ``p_EE``.
 
@@ -172,6 +179,11 @@ def derivation(
         Decimals shown for numbers in numeric mode (tiny noise shows as 0).
     simplify : bool
         Symbolic mode: fold products of sines and cosines into sums of angles.
+    allow_slow : bool
+        Symbolic mode: build the matrices of a chain over the documented cost too
+        (:func:`~robotconf.teaching.symbolic_fits`: about 3 s at the limit, doubling with
+        every further rotation, minutes for a 12-module chain). By default such a chain
+        is refused at once.
 
     Returns
     -------
@@ -181,7 +193,10 @@ def derivation(
     Raises
     ------
     InvalidInputError
-        On a bad ``q``, ``precision``, or ``lengths`` without ``symbolic``.
+        On a bad ``q``, ``precision``, or ``lengths`` without ``symbolic``; with
+        ``symbolic=True``, for a chain over the symbolic limit unless ``allow_slow``
+        (field ``symbolic``, the message of ``robotconf report``: "no symbolic matrices:
+        this chain is too long for them by default, …").
 
     Examples
     --------
@@ -193,6 +208,11 @@ def derivation(
     >>> steps = derivation(robot, symbolic=True, lengths=True)
     >>> steps["M3"].matrix[0, 0]
     cos(q1)*cos(q2 + q3)
+    >>> long_chain = Robot([Module(kind) for kind in ["Rz", "Ry", "Rx"] * 4])
+    >>> derivation(long_chain, symbolic=True)
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: symbolic: no symbolic matrices: this chain is too long for ...
     >>> print(derivation(robot, q=[0, 0, 0])["p_EE"])
     p_EE: M3·[Px, Py, Pz, 1]ᵀ with P = (40, 0, 0)
           [ 70 ]
@@ -213,6 +233,14 @@ def derivation(
             problem="needs symbolic:",
         )
     if symbolic:
+        if not allow_slow and not symbolic_fits(robot):
+            error = InvalidInputError(
+                "symbolic",
+                symbolic_cost(robot),
+                f"allow_slow=True, or a chain whose symbolic_cost ≤ {SYMBOLIC_COST_LIMIT}",
+            )
+            error.args = (f"symbolic: no symbolic matrices: {SYMBOLIC_TOO_LONG}",)
+            raise error
         return _symbolic_derivation(robot, q, lengths, precision, simplify)
     return _numeric_derivation(robot, q, precision)
 

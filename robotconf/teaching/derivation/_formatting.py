@@ -42,14 +42,46 @@ def format_number(value: float, precision: int = 4) -> str:
     return "0" if text in ("-0", "") else text
 
 
+#: Characters of robotconf's own texts that pdflatex cannot typeset as they are, and the
+#: LaTeX that stands for them: inline math, which works in text mode, inside ``\text{}``
+#: (amsmath) and in the notebook's MathJax alike.
+_LATEX_SYMBOLS = {
+    "·": "$\\cdot$",
+    "ᵀ": "$^{\\mathsf T}$",
+    "θ": "$\\theta$",
+    "α": "$\\alpha$",
+    "π": "$\\pi$",
+    "Δ": "$\\Delta$",
+    "τ": "$\\tau$",
+    "−": "-",
+    "…": "$\\ldots$",
+    "→": "$\\to$",
+    "×": "$\\times$",
+    "≤": "$\\le$",
+    "≥": "$\\ge$",
+    "°": "$^\\circ$",
+    "²": "$^2$",
+    "³": "$^3$",
+}
+
+
 def latex_text(text: str) -> str:
-    """Text for ``\\text{…}``: LaTeX specials escaped (unicode θ, α, · are kept).
+    """Text for ``\\text{…}``: LaTeX specials escaped, math symbols written in LaTeX.
+
+    pdflatex stops on characters such as ``ᵀ`` (U+1D40) and does not typeset Greek
+    letters in text: ``·``, ``ᵀ``, ``θ``, ``α``, ``π``, ``−``, ``…`` and a few more become
+    inline math (``$\\cdot$``, ``$^{\\mathsf T}$``, ``$\\theta$``, …), so robotconf's own
+    texts are plain ASCII (other letters, e.g. in a robot's name, are kept for
+    ``inputenc``).
 
     >>> latex_text("my_robot & 50% {x^2}")
     'my\\\\_robot \\\\& 50\\\\% \\\\{x\\\\^{}2\\\\}'
+    >>> print(latex_text("M3·[Px, Py, Pz, 1]ᵀ, θ0 = 0"))
+    M3$\\cdot$[Px, Py, Pz, 1]$^{\\mathsf T}$, $\\theta$0 = 0
     """
     replacements = {"\\": "\\textbackslash{}", "^": "\\^{}", "~": "\\~{}"}
     replacements.update({ch: "\\" + ch for ch in "{}_&%#$"})
+    replacements.update(_LATEX_SYMBOLS)
     return "".join(replacements.get(ch, ch) for ch in text)
 
 

@@ -34,8 +34,9 @@ PUMA 560, UR5 presets              6      126    0.3
 Stanford preset                    6      66     0.3
 =================================  =====  =====  ========
 
-A chain over the limit still works when asked for explicitly; it just takes longer
-(exponentially so).
+:func:`~robotconf.teaching.derivation` refuses a chain over the limit with
+:data:`SYMBOLIC_TOO_LONG` (the sentence ``robotconf report`` and the panel show too);
+``allow_slow=True`` still builds it, taking longer (exponentially so).
 """
 
 from __future__ import annotations
@@ -46,10 +47,18 @@ from typing import TYPE_CHECKING
 if TYPE_CHECKING:  # pragma: no cover
     from ...kinematics import Link, Robot
 
-__all__ = ["SYMBOLIC_COST_LIMIT", "symbolic_cost", "symbolic_fits"]
+__all__ = ["SYMBOLIC_COST_LIMIT", "SYMBOLIC_TOO_LONG", "symbolic_cost", "symbolic_fits"]
 
 #: The largest :func:`symbolic_cost` whose symbolic derivation is built by default.
 SYMBOLIC_COST_LIMIT = 128
+
+#: Why a chain over the limit gets no symbolic matrices, and how to get them anyway.
+SYMBOLIC_TOO_LONG = (
+    "this chain is too long for them by default, as sympy's time grows exponentially "
+    "with the rotations in the chain, from seconds to many minutes "
+    "(robotconf.teaching.symbolic_fits). To get them anyway, run "
+    "rc.derivation(robot, symbolic=True, allow_slow=True) in a notebook and accept the wait."
+)
 
 
 def _is_quarter_turn(angle: float) -> bool:

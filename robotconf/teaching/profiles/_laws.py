@@ -5,10 +5,9 @@ joint that moves by ``Δ`` follows ``q(t) = q0 + Δ·u(t)``. The profile checker
 right law of an exercise and the laws a student who made a usual slip would have used
 (the acceleration time doubled, a ramp left out, the cubic for the quintic), and reads
 every kind of answer off them: the trapezoid's times, the duration, the peaks, the
-polynomial's coefficients, the velocity at given times. The right trapezoid and quintic
-are the robot programs' own (:func:`robotconf.programs.trapezoidal`,
-:func:`robotconf.programs.quintic`); the formulas are the course's (lesson 12,
-docs/programs.md "Time laws"):
+polynomial's coefficients, the velocity at given times. The right laws are the ones the
+signals and the robot programs run (:mod:`robotconf.signals`, one home for the time
+laws); the formulas are the course's (lesson 12, docs/programs.md "Time laws"):
 
 - trapezoid under ``u̇ ≤ V``, ``|ü| ≤ A``: ``t_a = V/A``, ``T = 1/V + V/A`` when
   ``V²/A ≤ 1``; otherwise a triangle, ``t_a = √(1/A)``, ``T = 2·t_a``, peak ``A·t_a``;
@@ -23,7 +22,15 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ...programs import quintic, trapezoidal
+from ...signals import (
+    PEAK_ACCEL,
+    PEAK_SPEED,
+    TAU_COEFFICIENTS,
+    fastest_polynomial,
+    fastest_trapezoid,
+    polynomial_law,
+    trapezoid_law,
+)
 
 __all__ = [
     "LAW_KINDS",
@@ -40,16 +47,6 @@ __all__ = [
 #: Shapes a law may have. Two are slips: ``one_ramp`` accelerates and never slows down,
 #: ``box`` jumps to its speed and stops dead (no ramps at all).
 LAW_KINDS = ("trapezoid", "triangle", "one_ramp", "box", "cubic", "quintic", "still")
-
-#: Peak ``u̇·T`` and peak ``|ü|·T²`` of the two polynomials.
-PEAK_SPEED = {"cubic": 1.5, "quintic": 15.0 / 8.0}
-PEAK_ACCEL = {"cubic": 6.0, "quintic": 10.0 / math.sqrt(3.0)}
-
-#: Polynomial coefficients of u(τ), lowest power first.
-_TAU_COEFFICIENTS = {
-    "cubic": (0.0, 0.0, 3.0, -2.0),
-    "quintic": (0.0, 0.0, 0.0, 10.0, -15.0, 6.0),
-}
 
 
 @dataclass(frozen=True)
@@ -93,19 +90,14 @@ class Law:
         """
         t = np.asarray(t, dtype=float)
         inside = (t >= 0.0) & (t <= self.duration)
-        T = self.duration
         if self.kind in ("trapezoid", "triangle"):
-            value = np.minimum(np.minimum(self.accel * t, self.speed), self.accel * (T - t))
+            value = trapezoid_law(t, self.duration, self.blend, self.speed)[1]
+        elif self.kind in ("cubic", "quintic"):
+            value = polynomial_law(self.kind, t, self.duration)[1]
         elif self.kind == "one_ramp":
             value = np.minimum(self.accel * t, self.speed)
         elif self.kind == "box":
             value = np.full_like(t, self.speed)
-        elif self.kind in ("cubic", "quintic"):
-            tau = t / T
-            value = (
-                6.0 * tau * (1.0 - tau) if self.kind == "cubic" else 30.0 * (tau * (1.0 - tau)) ** 2
-            )
-            value = value / T
         else:
             value = np.zeros_like(t)
         return np.where(inside, np.maximum(value, 0.0), 0.0)
@@ -116,7 +108,7 @@ class Law:
         >>> timed_law("cubic", 2.0).tau_coefficients().tolist()
         [0.0, 0.0, 3.0, -2.0]
         """
-        return np.array(_TAU_COEFFICIENTS[self.kind])
+        return np.array(TAU_COEFFICIENTS[self.kind])
 
     def coefficients(self) -> np.ndarray:
         """The polynomial's coefficients of ``u(t)`` (t in s), lowest power first.
@@ -154,14 +146,11 @@ def optimal_law(kind: str, speed: float, accel: float) -> Law:
     1.0
     """
     if kind == "trapezoidal":
-        # The planner's own time law: the right answer is what robot programs run.
-        law = trapezoidal(speed, accel)
+        # The time law robot programs and signals run: the right answer is what they do.
+        duration, blend, peak = fastest_trapezoid(speed, accel)
         shape = "trapezoid" if speed * speed <= accel else "triangle"
-        return Law(shape, law.duration, law.blend, law.speed, law.accel)
-    if kind == "quintic":
-        return timed_law(kind, quintic(speed, accel).duration)
-    duration = max(PEAK_SPEED[kind] / speed, math.sqrt(PEAK_ACCEL[kind] / accel))
-    return timed_law(kind, duration)
+        return Law(shape, duration, blend, peak, accel)
+    return timed_law(kind, fastest_polynomial(kind, speed, accel))
 
 
 def timed_law(kind: str, duration: float) -> Law:
