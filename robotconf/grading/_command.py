@@ -22,6 +22,12 @@ partial credit and hidden tests), OUT/nbgrader_config.py and OUT/README.md. The
 solutions run first and must pass their own checks. OUT/source holds the solutions: it
 is the instructor's copy; `nbgrader generate_assignment` makes the students' copies."""
 
+_RUBRIC = """\
+Show a lesson's rubric: every exercise's points and the share a named slip earns (from
+the course's kit/weights.md), the kind of answer its check judges, whether the right
+numbers of a wrong answer count, and the slips the checker names. Markdown on standard
+output."""
+
 _KEY = """\
 Write the answer key (every exercise's expected value, formulas also as LaTeX) as
 Markdown (.md) or JSON (.json), by running the solutions notebooks. Lessons with
@@ -46,7 +52,7 @@ def _common(parser: argparse.ArgumentParser) -> None:
 
 
 def add_course_parser(commands: Any) -> None:
-    """Add ``course release`` and ``course key`` to the ``robotconf`` command.
+    """Add ``course release``, ``course rubric`` and ``course key`` to ``robotconf``.
 
     Parameters
     ----------
@@ -63,8 +69,10 @@ def add_course_parser(commands: Any) -> None:
     """
     course = commands.add_parser(
         "course",
-        help="instructor tools: the course for nbgrader, the answer key",
-        description="Instructor tools for the course: an nbgrader release and the answer key.",
+        help="instructor tools: the course for nbgrader, its rubric, the answer key",
+        description=(
+            "Instructor tools for the course: an nbgrader release, the rubric and the answer key."
+        ),
     )
     actions = course.add_subparsers(dest="course_command", required=True, metavar="ACTION")
     release = actions.add_parser(
@@ -75,6 +83,13 @@ def add_course_parser(commands: Any) -> None:
         "--course-id", default="robotconf", help="nbgrader's course id (default robotconf)"
     )
     _common(release)
+    rubric = actions.add_parser(
+        "rubric", help="show a lesson's rubric (points, slips, shares)", description=_RUBRIC
+    )
+    rubric.add_argument("lesson", metavar="LESSON", help="a lesson number or folder name")
+    rubric.add_argument(
+        "--course", metavar="COURSE_DIR", help="the course folder (default: ./course)"
+    )
     key = actions.add_parser("key", help="write the answer key", description=_KEY)
     key.add_argument("out", metavar="OUT.md|OUT.json", help="the key file")
     key.add_argument("--student", metavar="ID", help="a student id, for per-student lessons")
@@ -82,7 +97,7 @@ def add_course_parser(commands: Any) -> None:
 
 
 def run_course(args: argparse.Namespace, say: Callable[[str], None] = print) -> int:
-    """Run ``robotconf course release|key`` with parsed arguments; returns 0.
+    """Run ``robotconf course release|rubric|key`` with parsed arguments; returns 0.
 
     Raises
     ------
@@ -91,7 +106,11 @@ def run_course(args: argparse.Namespace, say: Callable[[str], None] = print) -> 
     """
     from ._answer_key import answer_key, key_path, write_answer_key
     from ._release import release_course
+    from ._rubric_table import rubric_text
 
+    if args.course_command == "rubric":
+        say(rubric_text(args.lesson, args.course).rstrip("\n"))
+        return 0
     if args.timeout < 1:
         from .._errors import InvalidInputError
 

@@ -1,4 +1,4 @@
-"""The points one autograder test cell earns: full, partial per entry, or none.
+"""The points one autograder test cell earns, by the course's rubric.
 
 A released test cell (``robotconf course release``) wraps the course's check in
 :class:`Credit` and ends with ``credit.score``. nbgrader reads that number as the cell's
@@ -6,20 +6,25 @@ grade: a test cell whose last output is a number between 0 and its points earns 
 many points; one that raises earns 0; one that writes to standard error earns 0 too,
 which is why the check's standard error and warnings are shown on standard output
 instead (a deprecation warning must not cost a student the exercise).
+
+What a wrong answer earns is the rubric's (:mod:`._rubric`): the share of a named slip
+of a right method, or the right numbers of an answer of several numbers. An answer cell
+that asks robotconf for its own answer earns no automatic credit: the cell says so, and
+nbgrader's autograde marks it for manual grading (:mod:`._shortcuts`).
 """
 
 from __future__ import annotations
 
 import contextlib
-import math
 import sys
 import warnings
+from collections.abc import Mapping
 from types import TracebackType
 from typing import Any
 
-from .._errors import InvalidInputError
-from ._points import answer_credit, credit_counts
 from ._recorder import CheckCall, CheckRecorder, original
+from ._rubric import DEFAULT_CAP, DEFAULT_SHARE, Award, Rubric, award
+from ._shortcuts import FLAG, own_work_calls
 
 __all__ = ["Credit", "HIDDEN_SAMPLES", "HIDDEN_SEED"]
 
@@ -37,26 +42,38 @@ class Credit:
     points : float
         What the exercise is worth (the test cell's nbgrader points).
     partial : bool
-        Give partial credit per entry (:func:`~robotconf.grading.answer_credit`) when
-        the error that ends the block is the one an ``assert_*`` checker raised (or the
-        hidden :meth:`recheck`). Release it only for a check with a single ``assert_*``
-        call: with several parts, one part's entries say little about the whole.
-        Otherwise, and for any other error (an unanswered exercise, a typing slip), the
-        error propagates and the cell earns 0.
+        Give rubric credit to a wrong answer (:func:`~robotconf.grading.award`) when the
+        error that ends the block is the one an ``assert_*`` checker raised (or the hidden
+        :meth:`recheck`). With several ``assert_*`` parts, only a named slip counts, not
+        the right numbers of one part. Otherwise, and for any other error (an unanswered
+        exercise, a typing slip), the error propagates and the cell earns 0.
+    share : float
+        The share of the points a named slip of a right method earns (default 0.5).
+    slips : mapping of str to float, optional
+        Shares for particular slips (diagnosis codes).
+    cap : float
+        The most a wrong answer earns by its right numbers (default 0.75).
+    several : bool
+        The check has several ``assert_*`` parts (set by the release).
 
     Attributes
     ----------
     score : float
         Points earned, set when the block ends: ``points`` when it ran without error;
-        the partial credit, rounded to 0.01, when an assertion failed with some graded
-        entries right (the block then ends quietly, printing the checker's message and
-        the credit); else 0, and the error propagates.
+        the rubric's credit, rounded to 0.01, when an assertion failed and the answer
+        earns some (the block then ends quietly, printing the checker's message and what
+        cost the points); else 0, and the error propagates.
+    award : Award or None
+        How the score was reached, for a wrong answer.
+    flagged : list of str
+        robotconf calls found in the answer cell by :meth:`own_work`: the exercise then
+        earns no automatic credit and is marked for manual grading.
 
     Notes
     -----
-    The checkers are followed through the modules (``rc.assert_matrix``, as the course's
-    check cells call them); a checker imported by name before the block is not seen,
-    and its exercise is then graded as a whole.
+    The verdict is read from the ``AssertionError`` the checker raised (its ``check``
+    attribute); checkers called as ``rc.assert_*`` are also followed through the modules
+    (for :meth:`recheck`).
 
     Examples
     --------
@@ -67,22 +84,27 @@ class Credit:
     ...     rc.assert_matrix(wrong, rc.expected_matrix(robot, "A1"))
     A1: 1 wrong entry.
     ...
-    Partial credit: 1.67 of 2 points (1 of the 6 entries that count is wrong).
+    Credit: 1.5 points of 2 points: 5 of the 6 numbers that count are right (a wrong answer ...
     >>> credit.score
-    1.67
+    1.5
     """
 
-    def __init__(self, points: float, *, partial: bool = True) -> None:
-        if (
-            isinstance(points, bool)
-            or not isinstance(points, (int, float))
-            or not math.isfinite(points)
-            or points < 0
-        ):
-            raise InvalidInputError("points", points, "a finite number ≥ 0")
-        self.points = float(points)
+    def __init__(
+        self,
+        points: float,
+        *,
+        partial: bool = True,
+        share: float = DEFAULT_SHARE,
+        slips: Mapping[str, float] | None = None,
+        cap: float = DEFAULT_CAP,
+        several: bool = False,
+    ) -> None:
+        self.rubric = Rubric(points, share, dict(slips or {}), cap, per_number=not several)
+        self.points = self.rubric.points
         self.partial = bool(partial)
         self.score = 0.0
+        self.award: Award | None = None
+        self.flagged: list[str] = []
         self._recorder = CheckRecorder()
         self._recheck_failure: tuple[CheckCall, AssertionError] | None = None
         self._stack: contextlib.ExitStack | None = None
@@ -108,34 +130,63 @@ class Credit:
             self._stack = None
         for caught in self._caught:
             print(f"(a warning during the check: {caught.category.__name__}: {caught.message})")
+        if self.flagged:
+            self.score = 0.0
+            if error is not None:
+                print(str(error).strip())
+            calls = ", ".join(self.flagged)
+            print(
+                f"\n{FLAG}: your answer cell calls robotconf ({calls}), which can compute "
+                "this answer. The exercise asks for your own derivation, so it earns no "
+                "automatic points: your teacher will look at it and grade it by hand."
+            )
+            return error is None or isinstance(error, AssertionError)
         if error is None:
             self.score = self.points
             return False
         self.score = 0.0
         if not (self.partial and isinstance(error, AssertionError)):
             return False
-        call = self._failed_check(error)
-        if call is None:
+        result = self._verdict(error)
+        if result is None:
             return False
-        score = min(self.points, round(self.points * answer_credit(call.kind, call.result), 2))
-        if score <= 0:
+        self.award = award(result, self.rubric)
+        if self.award.score <= 0:
             return False
-        self.score = score
-        wrong, graded = credit_counts(call.kind, call.result) or (0, 0)
-        print(str(error).strip() or str(call.result))
-        print(
-            f"\nPartial credit: {score:g} of {self.points:g} points ({wrong} of the {graded} "
-            f"entr{'y' if graded == 1 else 'ies'} that count {'is' if wrong == 1 else 'are'} "
-            "wrong)."
-        )
+        self.score = self.award.score
+        print(str(error).strip() or str(result))
+        print(f"\nCredit: {self.award.reason}")
         return True
 
-    def _failed_check(self, error: BaseException) -> CheckCall | None:
-        """The checker call whose failure ends the block, if a checker's error does."""
+    def _verdict(self, error: BaseException) -> Any:
+        """The verdict of the checker whose failure ends the block, if one does."""
         for failure in (self._recheck_failure, self._recorder.raised):
             if failure is not None and failure[1] is error:
-                return failure[0]
-        return None
+                return failure[0].result
+        return getattr(error, "check", None)
+
+    def own_work(self, variable: str, namespace: Mapping[str, Any] | None = None) -> list[str]:
+        """Flag the answer cell of ``variable`` if it calls robotconf.
+
+        Reads the last cell run that assigns ``variable`` from IPython's input history
+        (``In``) and lists its calls of robotconf functions and of methods of robotconf
+        objects (``rc.ik(…)``, ``arm.end_effector(…)``, ``rc.derivation(…).matrix``). A
+        flagged exercise earns 0 automatic points and a note (see the module notes).
+
+        Parameters
+        ----------
+        variable : str
+            The answer variable, e.g. ``"answer_4"``.
+        namespace : mapping, optional
+            The notebook's globals (default: IPython's user namespace).
+
+        Returns
+        -------
+        list of str
+            The calls found (empty when the cell is the student's own work).
+        """
+        self.flagged = own_work_calls(variable, namespace)
+        return self.flagged
 
     def recheck(self, *, seed: int = HIDDEN_SEED, samples: int = HIDDEN_SAMPLES) -> None:
         """Repeat every symbolic matrix check of the block at other values of the symbols.

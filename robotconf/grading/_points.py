@@ -1,19 +1,18 @@
-"""How many points an exercise is worth, and how much of them a partly right answer earns.
+"""How many points an exercise is worth, and how many numbers of an answer are right.
 
-**Points.** One point per exercise; a 4×4 matrix (a transfer or pose matrix, 16 entries
-to derive) is worth two. The shape is the one the check compares against.
+**Points.** Set per exercise by the course's weighting table (``course/kit/weights.md``,
+read by the release); a course without one gets one point per exercise and two for a
+4×4 matrix (a transfer or pose matrix, 16 entries to derive).
 
-**Partial credit per entry** (matrices, vectors, sets, intervals). A wrong answer of the
-right shape earns ``points × max(0, 1 − wrong / graded)``: ``wrong`` counts the entries
-the checker marked wrong (or too complicated to check) and ``graded`` the entries a
-blank guess would not already get right. Entries that are 0, equal to the identity's
-entry, or the homogeneous ``(0, …, 0, 1)`` last row are scaffolding: counting them would
-give an identity or zero matrix most of the points (10 of 16 for the transfer matrix of a
-z rotation). They still count as wrong when a student gets them wrong. For a set,
-``graded`` is the number of solutions and ``wrong`` the missing ones plus the extra
-elements. A wrong shape, a missing answer or an answer without graded entries earns
-nothing; so does a single number or angle, and a DH table (a wrong row moves every frame
-after it, so its rows are not separately right or wrong).
+**The numbers that count** (:func:`credit_counts`, read by the rubric in
+:mod:`._rubric`): a matrix's graded entries, a vector's or interval's components, the
+solutions of a set, a profile answer's numbers, a DH table's joint axes and its
+end-effector. Entries that are 0, equal to the identity's entry, or the homogeneous
+``(0, …, 0, 1)`` last row are scaffolding: counting them would give an identity or zero
+matrix most of the points (10 of 16 for the transfer matrix of a z rotation). They still
+count as wrong when a student gets them wrong. For a set, ``graded`` is the number of
+solutions and ``wrong`` the missing ones plus the extra elements. A single number or
+angle, one IK solution, a wrong shape and a missing answer have no numbers to count.
 """
 
 from __future__ import annotations
@@ -28,7 +27,6 @@ __all__ = [
     "POINTS_PER_EXERCISE",
     "POINTS_PER_MATRIX",
     "SCAFFOLD_TOLERANCE",
-    "answer_credit",
     "credit_counts",
     "graded_entries",
     "points_for",
@@ -40,8 +38,8 @@ POINTS_PER_EXERCISE = 1
 POINTS_PER_MATRIX = 2
 #: A numeric entry within this (absolute) distance of 0 or 1 counts as that number.
 SCAFFOLD_TOLERANCE = 1e-9
-#: The checkers' kinds whose answers can earn partial credit.
-PARTIAL_KINDS = ("matrix", "vector", "interval", "set")
+#: The kinds of answers of several numbers besides matrices and DH tables.
+PARTIAL_KINDS = ("vector", "interval", "set", "angle", "profile", "ik_solutions")
 
 
 def points_for(kind: str | None, shape: Sequence[int] | None) -> int:
@@ -132,84 +130,58 @@ def graded_entries(matrix: Any) -> np.ndarray:
     return graded
 
 
-def credit_counts(kind: str, result: Any) -> tuple[int, int] | None:
-    """How many graded entries a wrong answer has wrong, and how many there are.
+def credit_counts(result: Any) -> tuple[int, int] | None:
+    """How many of a wrong answer's numbers that count are wrong, and how many count.
 
     Parameters
     ----------
-    kind : str
-        The checker's kind: ``"matrix"``, ``"vector"``, ``"interval"``, ``"set"``,
-        ``"value"``, ``"angle"`` or ``"dh_table"``.
-    result : MatrixCheck, AnswerCheck or DHTableCheck
-        A verdict that is not ok.
+    result : MatrixCheck, AnswerCheck, IKCheck or DHTableCheck
+        A verdict that is not ok; its ``kind`` says which check made it.
 
     Returns
     -------
     (wrong, graded) or None
-        ``None`` when no partial credit applies: no answer, a wrong shape, no graded
-        entry, or a kind graded as a whole (value, angle, DH table).
+        ``None`` when there are no numbers to count: no answer, a wrong shape, no graded
+        entry, or a kind that is one number (a value, one angle, one IK solution).
 
     Examples
     --------
-    >>> from robotconf import check_vector
-    >>> credit_counts("vector", check_vector([0, 35, 40], [0, 35, -40]))
+    >>> from robotconf import check_set, check_vector
+    >>> credit_counts(check_vector([0, 35, 40], [0, 35, -40]))
     (1, 2)
+    >>> credit_counts(check_set([0, 3], [0, np.pi]))  # π missing, 3 extra
+    (2, 2)
     """
+    kind = getattr(result, "kind", None)
     if kind == "matrix":
         student, expected = result.student, result.expected.matrix
         if student is None or tuple(student.shape) != tuple(expected.shape):
             return None
         graded = int(graded_entries(expected).sum())
         wrong = len(set(result.wrong_entries) | set(result.unchecked_entries))
+    elif kind == "dh_table":
+        joints = len(result.rows)
+        if not joints or result.diagnosis in ("no_answer", "row_count", "joint_type"):
+            return None
+        graded = joints + 1  # every joint's axis, and the end-effector
+        wrong = len(result.wrong_joints) + (0 if result.end_effector_ok else 1)
     elif kind in PARTIAL_KINDS:
-        if result.student is None or result.diagnosis == "shape":
+        if result.student is None or result.diagnosis in ("shape", "no_answer"):
             return None
         expected = np.asarray(result.expected, dtype=float)
         if kind == "set":
             graded = len(expected)
+        elif kind == "ik_solutions":  # the solutions found plus the missing ones
+            graded = len(result.student) - len(result.extra) + len(result.wrong)
+        elif kind == "profile":
+            if expected.size < 2 or np.shape(result.student) != expected.shape:
+                return None
+            graded = expected.size
         else:
+            if expected.size < 2:
+                return None
             graded = int((np.abs(expected.ravel()) > SCAFFOLD_TOLERANCE).sum())
         wrong = len(result.wrong) + len(result.extra)
     else:
         return None
-    return (wrong, graded) if graded else None
-
-
-def answer_credit(kind: str, result: Any) -> float:
-    """The fraction of the points a checked answer earns, from 0 to 1.
-
-    Parameters
-    ----------
-    kind : str
-        The checker's kind (see :func:`credit_counts`).
-    result : MatrixCheck, AnswerCheck or DHTableCheck
-
-    Returns
-    -------
-    float
-        1 when right; ``max(0, 1 − wrong / graded)`` from :func:`credit_counts`; 0 when
-        no partial credit applies.
-
-    Examples
-    --------
-    >>> from robotconf import Module, Robot, check_matrix, check_set, expected_matrix
-    >>> robot = Robot([Module("Rz", a=(30, 0, 20))])
-    >>> a1 = expected_matrix(robot, "A1")
-    >>> one_sign = "[[cos(q1), sin(q1), 0, 30], [sin(q1), cos(q1), 0, 0], [0, 0, 1, 20], "
-    >>> one_sign += "[0, 0, 0, 1]]"  # the sine in (2,1) should be -sin(q1)
-    >>> answer_credit("matrix", check_matrix(one_sign, a1))  # 1 of the 6 graded entries
-    0.8333333333333334
-    >>> answer_credit("matrix", check_matrix(np.eye(4), a1))  # a blank guess
-    0.0
-    >>> answer_credit("set", check_set([0], [0, np.pi]))  # π missing
-    0.5
-    >>> answer_credit("set", check_set([0, 3], [0, np.pi]))  # π missing, 3 extra
-    0.0
-    """
-    if result.ok:
-        return 1.0
-    counts = credit_counts(kind, result)
-    if counts is None:
-        return 0.0
-    wrong, graded = counts
-    return max(0.0, 1.0 - wrong / graded)
+    return (min(wrong, graded), graded) if graded else None

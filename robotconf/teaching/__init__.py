@@ -10,10 +10,10 @@ Symbolic chain (an independent second implementation of the matrices, in sympy)
     :func:`elementary_matrix`, :func:`dh_factors`, :func:`exact_number`
 Expected answers and the checker
     :func:`expected_matrix`, :class:`ExpectedMatrix`, :func:`check_matrix`,
-    :func:`assert_matrix`, :class:`MatrixCheck`. Answers are untrusted: the checker
-    decides by numbers at seeded random points, refuses entries that are not real, and
-    does algebra only within a small budget, so any answer is judged in ≤ 2 s for a 4×4
-    matrix (see :func:`check_matrix`, Notes).
+    :func:`assert_matrix`, :class:`MatrixCheck` (codes: :data:`MATRIX_DIAGNOSES`).
+    Answers are untrusted: the checker decides by numbers at seeded random points,
+    refuses entries that are not real, and does algebra only within a small budget, so
+    any answer is judged in ≤ 2 s for a 4×4 matrix (see :func:`check_matrix`, Notes).
 Answers that are not matrices (same parser and numeric judge, 0.1 % tolerance)
     :func:`check_value`, :func:`check_vector`, :func:`check_angle`, :func:`check_set`,
     :func:`check_interval`, their ``assert_*`` forms (:func:`assert_value`,
@@ -38,6 +38,9 @@ Student text (a whitelist parser: nothing is evaluated)
 """
 
 from .checks import (
+    DH_DIAGNOSES,
+    DIAGNOSES,
+    MATRIX_DIAGNOSES,
     AnswerCheck,
     DHTableCheck,
     MatrixCheck,
@@ -137,6 +140,9 @@ __all__ = [
     "assert_set",
     "assert_interval",
     "AnswerCheck",
+    "DIAGNOSES",
+    "MATRIX_DIAGNOSES",
+    "DH_DIAGNOSES",
     "Candidate",
     "generic_candidates",
     "is_rotation_like",

@@ -9,25 +9,26 @@ mistake (:mod:`robotconf.teaching.diagnosis`) without quoting the expected value
 line without the checker's frames.
 
 Matrices
-    :func:`check_matrix`, :func:`assert_matrix`, :class:`MatrixCheck`
+    :func:`check_matrix`, :func:`assert_matrix`, :class:`MatrixCheck`,
+    :data:`MATRIX_DIAGNOSES`
 Numbers, vectors, angles, sets, intervals
     :func:`check_value`, :func:`check_vector`, :func:`check_angle`, :func:`check_set`,
     :func:`check_interval`, their ``assert_*`` forms, :class:`AnswerCheck`,
     :data:`DIAGNOSES`
 DH tables (judged by the robot they describe)
     :func:`check_dh_table`, :func:`assert_dh_table`, :class:`DHTableCheck`,
-    :func:`parse_dh_rows`
+    :func:`parse_dh_rows`, :data:`DH_DIAGNOSES`
 
 >>> check_value("pi", 3.14159).ok
 True
 """
 
 from ._asserts import assert_angle, assert_interval, assert_set, assert_value, assert_vector
-from ._dh_table import DHTableCheck, assert_dh_table, check_dh_table
+from ._dh_table import DH_DIAGNOSES, DHTableCheck, assert_dh_table, check_dh_table
 from ._dh_table_text import parse_dh_rows
 from ._interval import check_interval
 from ._matrix import assert_matrix, check_matrix
-from ._matrix_result import MatrixCheck
+from ._matrix_result import MATRIX_DIAGNOSES, MatrixCheck
 from ._numbers import check_angle, check_value, check_vector
 from ._result import DIAGNOSES, AnswerCheck
 from ._sets import check_set
@@ -36,6 +37,7 @@ __all__ = [
     "check_matrix",
     "assert_matrix",
     "MatrixCheck",
+    "MATRIX_DIAGNOSES",
     "check_value",
     "check_vector",
     "check_angle",
@@ -51,5 +53,6 @@ __all__ = [
     "check_dh_table",
     "assert_dh_table",
     "DHTableCheck",
+    "DH_DIAGNOSES",
     "parse_dh_rows",
 ]

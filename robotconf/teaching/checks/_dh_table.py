@@ -44,10 +44,32 @@ from ._dh_table_text import (
     row_count_hint,
 )
 
-__all__ = ["DHTableCheck", "check_dh_table", "assert_dh_table"]
+__all__ = ["DH_DIAGNOSES", "DHTableCheck", "check_dh_table", "assert_dh_table"]
+
+#: Every diagnosis code a :class:`DHTableCheck` may carry, with what it means.
+DH_DIAGNOSES = {
+    "no_answer": "the answer is still None",
+    "row_count": "a row missing, or a row for a constant offset that is no joint",
+    "joint_variable": "q in the wrong column, another row's q, or no q",
+    "joint_direction": "−q where the joint turns with +q",
+    "joint_type": "a revolute joint written as prismatic, or back",
+    "convention": "standard and modified DH mixed up",
+    "degrees": "angles in degrees",
+    "alpha_sign": "one α with the wrong sign",
+    "swapped_a_d": "a and d of one row exchanged",
+    "theta_offset": "a θ offset missing or extra (the joint's zero moved)",
+    "twist": "a z axis not turned onto the next joint's axis (a wrong α)",
+    "a_sign": "one a with the wrong sign",
+    "d_sign": "one d with the wrong sign",
+    "axis": "a joint axis in the wrong place, no single slip recognised",
+    "reversed_axis": "a joint axis on the right line, pointing the other way",
+    "end_effector": "every axis right, the end-effector not",
+}
 
 _TURNS = (np.pi / 2, np.pi, -np.pi / 2)
 _TWISTS = (0.0, np.pi / 2, -np.pi / 2, np.pi)
+#: Diagnoses that only say where the table goes wrong, not which slip made it.
+_UNEXPLAINED = ("no_answer", "axis", "reversed_axis", "end_effector")
 
 
 @dataclass(frozen=True, eq=False)
@@ -76,6 +98,12 @@ class DHTableCheck:
         be read as DH rows.
     convention : str
         The convention the table was read in.
+    end_effector_ok : bool
+        The table puts the end-effector where the robot has it (at every sampled ``q``);
+        False too when the table could not be compared.
+    complete : bool
+        The diagnosis explains the whole mistake: undoing it gives the robot (a repaired
+        row, the other convention, degrees), or it is the table's only problem.
     """
 
     ok: bool
@@ -84,6 +112,13 @@ class DHTableCheck:
     wrong_joints: list[int]
     rows: tuple[DHRow, ...]
     convention: str
+    end_effector_ok: bool = False
+    complete: bool = False
+
+    @property
+    def kind(self) -> str:
+        """``"dh_table"``: which check made the verdict."""
+        return "dh_table"
 
     def __bool__(self) -> bool:
         return self.ok
@@ -368,9 +403,12 @@ def _check(
     robot = _expected_robot(expected, convention, end_effector, values)
     ref = _reference(robot, samples, seed, tol)
 
-    def fail(code: str, hints: list[str], rows: Any = (), wrong: Any = ()) -> DHTableCheck:
+    def fail(
+        code: str, hints: list[str], rows: Any = (), wrong: Any = (), tool: bool = False
+    ) -> DHTableCheck:
         joints = sorted(j + 1 for j in wrong)
-        return DHTableCheck(False, hints, code, joints, tuple(rows), convention)
+        whole = len(hints) == 1 and code not in _UNEXPLAINED
+        return DHTableCheck(False, hints, code, joints, tuple(rows), convention, tool, whole)
 
     if answer is None:
         return fail("no_answer", [NO_ANSWER])
@@ -387,9 +425,9 @@ def _check(
     if own is None:  # a table the robot class refuses (numbers beyond 1e150)
         raise InvalidInputError("answer", answer, "numbers of at most 1e150")
     if own.ok:
-        return DHTableCheck(True, [], None, [], rows, convention)
+        return DHTableCheck(True, [], None, [], rows, convention, True)
     code, hint = _diagnose(ref, rows, convention, end_effector, own, reveal)
-    return fail(code, [hint], rows, own.wrong)
+    return fail(code, [hint], rows, own.wrong, own.end_effector_ok)
 
 
 def assert_dh_table(answer: Any, expected: Any, **options: Any) -> DHTableCheck:

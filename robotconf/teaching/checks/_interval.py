@@ -21,7 +21,7 @@ from ._result import AnswerCheck
 __all__ = ["check_interval"]
 
 
-@answer_check
+@answer_check(kind="interval")
 def check_interval(
     answer: Any,
     expected_lo_hi: Any,

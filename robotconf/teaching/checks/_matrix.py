@@ -433,6 +433,7 @@ def _check(
         at = len(hints) - 1 if hints and hints[-1].startswith("Wrong entries: ") else len(hints)
         hints[at:at] = _unchecked_hints(unchecked)
         codes.append("too_complicated")
+    complete = bool(found.ranked) and found.ranked[0].full and not unchecked
     return MatrixCheck(
         False,
         sorted(wrong),
@@ -443,6 +444,7 @@ def _check(
         reveal,
         sorted(unchecked),
         diagnoses=found.codes,
+        complete=complete,
     )
 
 

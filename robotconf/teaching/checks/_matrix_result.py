@@ -9,7 +9,39 @@ from typing import Any
 from ..derivation._expected import ExpectedMatrix
 from ..reading._shown import show_entry, show_expected
 
-__all__ = ["MatrixCheck"]
+__all__ = ["MATRIX_DIAGNOSES", "MatrixCheck"]
+
+#: Every diagnosis code a :class:`MatrixCheck` may carry, with what it means. A code of
+#: the same slip made in every module of a kind ends in ``_all``.
+MATRIX_DIAGNOSES = {
+    "no_answer": "the answer is still None",
+    "shape": "a matrix of another shape",
+    "too_complicated": "an entry is too large for the checker to evaluate",
+    "wrong_order": "the transfer matrices multiplied in the wrong order",
+    "transposed_rotation": "the rotation part written transposed (axes as rows)",
+    "transposed_matrix": "the whole matrix transposed",
+    "rotation_direction": "a module turned the wrong way (the sines' signs)",
+    "sign_error": "one entry, or one pattern of entries, with the wrong sign",
+    "offset_after_rotation": "a module's offset applied after its rotation (Rot·Trans)",
+    "missing_offset": "a module's offset, a DH length or the end-effector point left out",
+    "dh_convention": "the other DH convention's product",
+    "degrees_as_radians": "angles in degrees fed to sin and cos",
+    "radians_as_degrees": "a calculator in degree mode",
+    "row_swap": "two rows exchanged",
+    "column_swap": "two columns exchanged",
+    "swapped_d_a": "a DH row's d and a exchanged",
+    "homogeneous_coordinate": "the homogeneous coordinate 0 for a point, or left out",
+    "parking_pose": "the answer at q = 0 instead of the asked pose",
+    "joint_left_out": "one joint's q left out",
+    "swapped_joints": "two joints' q exchanged",
+    "unit_slip": "a length in the wrong unit (×1000)",
+    "coarse_rounding": "numbers rounded to too few digits",
+    "rotation_direction_all": "every module of a kind turned the wrong way",
+    "missing_offset_all": "the offsets of every module of a kind left out",
+    "offset_after_rotation_all": "Rot·Trans in every module of a kind",
+    "sign_error_all": "the same sign slip in every module of a kind",
+    "swapped_d_a_all": "d and a exchanged in every DH row",
+}
 
 
 @dataclass(frozen=True, eq=False)
@@ -43,6 +75,8 @@ class MatrixCheck:
     unchecked_entries : list of (int, int)
         0-based entries too complicated to check within the checker's budget (neither
         right nor known to be wrong; ``ok`` is False while there are any).
+    complete : bool
+        The primary diagnosis explains every wrong entry (one slip, nothing else wrong).
     diagnoses : tuple of str
         Every explanation that fits the wrong entries, ranked best first, each code once
         (see :mod:`robotconf.teaching._ranking`); empty when the answer is right or
@@ -69,6 +103,12 @@ class MatrixCheck:
     reveal: bool = field(default=False, repr=False)
     unchecked_entries: list[tuple[int, int]] = field(default_factory=list)
     diagnoses: tuple[str, ...] = ()
+    complete: bool = False
+
+    @property
+    def kind(self) -> str:
+        """``"matrix"``: which check made the verdict."""
+        return "matrix"
 
     @property
     def diagnosis(self) -> str | None:

@@ -59,6 +59,7 @@ def finish(
         return AnswerCheck(True, [], None, name, student, expected, **more)
     if hint and codes[:1] != ["no_answer"]:
         hints = [*hints, hint]
+    more.setdefault("complete", len(set(codes)) == 1)
     return AnswerCheck(
         False, hints, codes[0] if codes else "wrong", name, student, expected, **more
     )
@@ -142,7 +143,7 @@ def judge_components(
     )
 
 
-@answer_check
+@answer_check(kind="value")
 def check_value(
     answer: Any,
     expected: Any,
@@ -224,7 +225,7 @@ def _vector_reference(expected: Any, what: str) -> np.ndarray:
     return reference
 
 
-@answer_check
+@answer_check(kind="vector")
 def check_vector(
     answer: Any,
     expected: Any,
@@ -292,7 +293,7 @@ def check_vector(
     )
 
 
-@answer_check
+@answer_check(kind="angle")
 def check_angle(
     answer: Any,
     expected: Any,

@@ -59,6 +59,12 @@ class AnswerCheck:
         For a set: the answer's elements (0-based) that are no solution or repeat one.
     headline : str
         The first line of the message (``"the velocity: 1 wrong component (z)."``).
+    kind : str
+        Which check made the verdict: ``"value"``, ``"vector"``, ``"angle"``, ``"set"``,
+        ``"interval"``, ``"profile"``, ``"ik_solution"`` or ``"ik_solutions"``.
+    complete : bool
+        The diagnosis explains every wrong number: one slip, nothing else wrong (what a
+        rubric may credit as "a right method with one slip").
     """
 
     ok: bool
@@ -71,6 +77,8 @@ class AnswerCheck:
     extra: list[int] = field(default_factory=list)
     headline: str = ""
     reveal: bool = field(default=False, repr=False)
+    kind: str = "value"
+    complete: bool = False
 
     def __bool__(self) -> bool:
         return self.ok

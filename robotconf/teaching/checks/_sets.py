@@ -318,7 +318,7 @@ def _check_set(
     )
 
 
-@answer_check
+@answer_check(kind="set")
 def check_set(
     answer: Any,
     expected_set: Any,

@@ -111,7 +111,7 @@ def _judge(
     return verdict(hints, [found.code], name, q, target, hint, reveal=reveal, **more)
 
 
-@answer_check
+@answer_check(kind="ik_solution")
 def check_ik_solution(
     answer: Any,
     robot: Any,

@@ -97,4 +97,5 @@ def verdict(
         return IKCheck(True, [], None, name, student, expected, **more)
     if hint and codes[:1] != ["no_answer"]:
         hints = [*hints, hint]
+    more.setdefault("complete", len(set(codes)) == 1)
     return IKCheck(False, hints, codes[0], name, student, expected, **more)

@@ -202,7 +202,7 @@ def _judge_set(
     )
 
 
-@answer_check
+@answer_check(kind="ik_solutions")
 def check_ik_solutions(
     answer_set: Any,
     robot: Any,

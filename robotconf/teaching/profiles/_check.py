@@ -94,7 +94,11 @@ def _verdict(
         repeated = np.full(task.n, float(expected))
         if close(values.reshape(-1), repeated, setting, None).all():
             return AnswerCheck(True, [], None, what, values.reshape(-1), expected)
-    more = {"reveal": setting.reveal}
+    more: dict[str, Any] = {"reveal": setting.reveal}
+    if student is not None and student.shape == expected.shape and expected.ndim:
+        # the numbers that are wrong, for per-number credit whatever the diagnosis
+        misses = ~close(student.reshape(-1), expected.reshape(-1), setting, None)
+        more["wrong"] = [int(i) for i in np.flatnonzero(misses)]
     right = f" The right {what}: {_show(expected, setting)}." if setting.reveal else ""
     # Two slips may give the same numbers (T = d/v + v/(2a) is a missing ramp down, or
     # t_a = v/(2a)): every hint that fits is given, the first one's code leads.
@@ -108,7 +112,8 @@ def _verdict(
         texts[-1] += right
         codes = [slip.code for slip in matched]
         shown = values if student is None else student
-        return finish(False, texts, codes, what, shown, expected, hint, **more)
+        # Each matched slip gives exactly the answer's numbers: it explains all of them.
+        return finish(False, texts, codes, what, shown, expected, hint, complete=True, **more)
     if student is None or student.shape != expected.shape:
         count = values.size
         wanted = expected.size
@@ -154,7 +159,7 @@ def _verdict(
     )
 
 
-@answer_check
+@answer_check(kind="profile")
 def check_profile(
     answer: Any,
     expected: ProfileTask,

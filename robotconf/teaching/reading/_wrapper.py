@@ -11,6 +11,7 @@ parsing the message.
 
 from __future__ import annotations
 
+import dataclasses
 import functools
 from collections.abc import Callable
 from typing import Any, TypeVar
@@ -48,12 +49,14 @@ def short_traceback(error: E) -> E:
     return error.with_traceback(None)
 
 
-def answer_check(function: F) -> F:
+def answer_check(function: F | None = None, *, kind: str | None = None) -> Any:
     """Decorate a public check: bad input ends as one short ``InvalidInputError``.
 
     The decorated function keeps its name, signature and docstring; an
     :class:`~robotconf.InvalidInputError` raised anywhere below it reaches the caller
-    without the checker's internal frames (:func:`short_traceback`).
+    without the checker's internal frames (:func:`short_traceback`). With ``kind``
+    (``@answer_check(kind="set")``), the verdict's ``kind`` says which check made it, so
+    a grader can count its numbers without knowing the call.
 
     >>> @answer_check
     ... def check_positive(x):
@@ -65,18 +68,23 @@ def answer_check(function: F) -> F:
     ...
     robotconf.InvalidInputError: x: invalid value -1; allowed: a number > 0
     """
+    if function is None:
+        return functools.partial(answer_check, kind=kind)
 
     @functools.wraps(function)
     def check(*args: Any, **kwargs: Any) -> Any:
         __tracebackhide__ = True  # noqa: F841 (read by IPython and pytest)
         try:
-            return function(*args, **kwargs)
+            result = function(*args, **kwargs)
         except InvalidInputError as error:
             raise short_traceback(error) from None
+        if kind is not None and dataclasses.is_dataclass(result):
+            result = dataclasses.replace(result, kind=kind)  # type: ignore[type-var]
+        return result
 
     # A plain traceback's last line then names the public call (check_matrix), not "check".
     check.__code__ = check.__code__.replace(co_name=function.__name__)  # type: ignore[attr-defined]
-    return check  # type: ignore[return-value]
+    return check
 
 
 def passed(result: R) -> R:
