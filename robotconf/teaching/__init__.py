@@ -14,7 +14,7 @@ Expected answers and the checker
     Answers are untrusted: the checker decides by numbers at seeded random points,
     refuses entries that are not real, and does algebra only within a small budget, so
     any answer is judged in ≤ 2 s for a 4×4 matrix (see :func:`check_matrix`, Notes).
-Answers that are not matrices (same parser and numeric judge, 0.1 % tolerance)
+Answers that are not matrices (same parser and numeric judge; 3 significant digits pass)
     :func:`check_value`, :func:`check_vector`, :func:`check_angle`, :func:`check_set`,
     :func:`check_interval`, their ``assert_*`` forms (:func:`assert_value`,
     :func:`assert_vector`, :func:`assert_angle`, :func:`assert_set`,

@@ -31,6 +31,7 @@ from ...kinematics import (
     check_parameter_vector,
     joint_axes,
 )
+from ..reading._tolerance import REL_TOL
 from ..reading._wrapper import answer_check, passed
 from ._dh_table_text import (
     NO_ANSWER,
@@ -306,7 +307,7 @@ def check_dh_table(
     convention: str = "standard",
     end_effector: Any = (0.0, 0.0, 0.0),
     values: Mapping[str, Any] | None = None,
-    tol: float = 1e-3,
+    tol: float = REL_TOL,
     samples: int = 8,
     seed: int = 0,
     reveal: bool = False,

@@ -13,6 +13,7 @@ import numpy as np
 from ..._errors import InvalidInputError
 from ..diagnosis._components import close
 from ..reading._parser import ParserLimits
+from ..reading._tolerance import ABS_TOL, REL_TOL
 from ..reading._wrapper import answer_check
 from ._input import expected_numbers, read_options
 from ._numbers import finish, judge_components
@@ -26,8 +27,8 @@ def check_interval(
     answer: Any,
     expected_lo_hi: Any,
     *,
-    tol: float = 1e-3,
-    rel: float = 1e-3,
+    tol: float = ABS_TOL,
+    rel: float = REL_TOL,
     unit: str | None = None,
     name: str | None = None,
     reveal: bool = False,

@@ -35,6 +35,7 @@ from ..reading._numeric_judge import (
 )
 from ..reading._parser import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
 from ..reading._slips import slip_in_entry
+from ..reading._tolerance import REL_TOL
 from ..reading._wrapper import answer_check, passed
 from ._matrix_result import MatrixCheck
 
@@ -269,7 +270,7 @@ def check_matrix(
     student: Any,
     expected: Any,
     *,
-    tol: float = 1e-3,
+    tol: float = REL_TOL,
     samples: int = 8,
     seed: int = 0,
     symbols: Iterable[Any] | None = None,
@@ -292,7 +293,7 @@ def check_matrix(
         bare matrix gets context-free hints only (rotation wording only when it is a
         rotation or a homogeneous transform). A scalar is a 1×1 matrix.
     tol : float
-        An entry is right when ``|student − expected| ≤ tol·max(1, |expected|)`` at every
+        An entry is right when ``|student − expected| ≤ tol·max(0.2, |expected|)`` at every
         sample point (numbers rounded to about 3 significant decimals pass).
     samples : int
         Random points at which symbolic entries are compared (K ≥ 1).

@@ -11,8 +11,9 @@ an answer may be a number, a list, an array or text such as ``"pi/2"`` or
 **In a course notebook** a check cell keeps its "not answered yet" line and then calls one
 assert, e.g. ``rc.assert_value(answer_4, expected_4, name="dq3/dt at t = 2 s",
 unit="rad/s", hint="…")``. An answer passes when every number is within
-``max(tol, rel·|expected|)`` of the expected one (by default 0.1 %, or 0.001 near zero),
-so 3.1416 and ``"pi"`` pass for π and 1.5708 for π/2; a wrong one gets the recognised
+``max(tol, rel·|expected|)`` of the expected one (by default 0.5 %, or 0.001 near zero:
+the course's rule, 3 significant digits pass), so 3.14 and ``"pi"`` pass for π and 1.57
+for π/2; a wrong one gets the recognised
 mistake (wrong sign, swapped components, degrees for radians, a unit factor of 1000, a half
 turn, too few digits, a missing or repeated solution, swapped interval ends) without the
 expected value, unless ``reveal=True``. ``hint=`` adds the exercise's own sentence.
@@ -31,6 +32,7 @@ from ..._validation import check_finite_number, check_flag
 from ..diagnosis._components import Setting, explain_components, names_text
 from ..reading._parser import ParserLimits
 from ..reading._shown import sentence
+from ..reading._tolerance import ABS_TOL, REL_TOL
 from ..reading._wrapper import answer_check
 from ._input import (
     NO_ANSWER,
@@ -148,8 +150,8 @@ def check_value(
     answer: Any,
     expected: Any,
     *,
-    tol: float = 1e-3,
-    rel: float = 1e-3,
+    tol: float = ABS_TOL,
+    rel: float = REL_TOL,
     unit: str | None = None,
     name: str | None = None,
     reveal: bool = False,
@@ -167,8 +169,9 @@ def check_value(
         The reference (a float, numpy or sympy number).
     tol, rel : float
         The answer is right when ``|answer − expected| ≤ max(tol, rel·|expected|)``: by
-        default within 0.1 %, or within 0.001 for values near zero (below 1), as
-        :func:`check_matrix` judges entries. So 3.1416 passes for π, 3.2 does not.
+        default within 0.5 %, or within 0.001 for values near zero: a number with 3
+        significant digits passes (3.14 for π), one with 2 gets the rounding hint (3.1),
+        3.2 does not pass.
     unit : str, optional
         Shown with quoted numbers (``"rad/s"``).
     name : str, optional
@@ -230,8 +233,8 @@ def check_vector(
     answer: Any,
     expected: Any,
     *,
-    tol: float = 1e-3,
-    rel: float = 1e-3,
+    tol: float = ABS_TOL,
+    rel: float = REL_TOL,
     unit: str | None = None,
     name: str | None = None,
     components: Sequence[str] | None = None,
@@ -247,7 +250,7 @@ def check_vector(
         ``[0, 35, -40]``, ``"[0, 35, -40]"``, a row or a column.
     expected : array-like, shape (n,)
     tol, rel : float
-        Each component is right within ``max(tol, rel·|expected component|)`` (0.1 %, or
+        Each component is right within ``max(tol, rel·|expected component|)`` (0.5 %, or
         0.001 near zero, by default).
     unit : str, optional
         Shown with quoted numbers (``"mm/s"``).
@@ -299,7 +302,7 @@ def check_angle(
     expected: Any,
     *,
     tol: float | None = None,
-    rel: float = 1e-3,
+    rel: float = REL_TOL,
     period: float | None = None,
     degrees: bool = False,
     name: str | None = None,
@@ -356,7 +359,7 @@ def check_angle(
     """
     degrees = check_flag(degrees, "degrees")
     if tol is None:
-        tol = math.degrees(1e-3) if degrees else 1e-3
+        tol = math.degrees(ABS_TOL) if degrees else ABS_TOL
     if period is None:
         period = 360.0 if degrees else 2 * math.pi
     period = check_finite_number(period, "period")

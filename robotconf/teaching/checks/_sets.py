@@ -16,9 +16,19 @@ import numpy as np
 
 from ..._errors import InvalidInputError
 from ..._validation import check_finite_number
-from ..diagnosis._components import Setting, allowed, close, keep_digits, names_text, rounded, wrap
+from ..diagnosis._components import (
+    Setting,
+    allowed,
+    close,
+    keep_digits,
+    length_unit,
+    names_text,
+    rounded,
+    wrap,
+)
 from ..reading._parser import ParserLimits
 from ..reading._shown import number_text, sentence
+from ..reading._tolerance import ABS_TOL, REL_TOL
 from ..reading._wrapper import answer_check
 from ._input import NO_ANSWER, expected_numbers, parse_answer, read_options
 from ._numbers import finish
@@ -132,7 +142,7 @@ def _diagnose_extra(
         ("degrees", np.degrees(solutions), degrees_period),
         ("sign", -solutions, period),
     ]
-    if period is None:
+    if period is None and length_unit(setting.unit):
         candidates += [("large", solutions * 1000, None), ("small", solutions / 1000, None)]
     for slip, candidate, candidate_period in candidates:
         found = np.all(close(element[None, :], candidate, setting, candidate_period), axis=1)
@@ -323,8 +333,8 @@ def check_set(
     answer: Any,
     expected_set: Any,
     *,
-    tol: float = 1e-3,
-    rel: float = 1e-3,
+    tol: float = ABS_TOL,
+    rel: float = REL_TOL,
     period: float | None = None,
     unit: str | None = None,
     name: str | None = None,
@@ -344,7 +354,8 @@ def check_set(
     expected_set : array-like, shape (m,) or (m, d)
         The m solutions: numbers, or vectors of d numbers.
     tol, rel : float
-        A number is right within ``max(tol, rel·|expected|)`` (0.1 %, or 0.001 near zero).
+        A number is right within ``max(tol, rel·|expected|)`` (0.5 %, or 0.001 near zero:
+        3 significant digits pass).
     period : float, optional
         For angles: solutions equal modulo ``period`` (``2*np.pi``) are the same.
     unit, name, reveal, hint, limits

@@ -9,11 +9,13 @@ tolerance names the mistake. Angles compare modulo their period throughout.
 from __future__ import annotations
 
 import math
+import re
 from dataclasses import dataclass
 
 import numpy as np
 
 from ..reading._shown import number_text, sentence
+from ..reading._tolerance import KEEP_DIGITS
 
 __all__ = [
     "allowed",
@@ -24,13 +26,14 @@ __all__ = [
     "explain_components",
     "is_rounded",
     "keep_digits",
+    "length_unit",
     "names_text",
     "rounded",
 ]
 
 
 def tolerance_text(tol: float, rel: float) -> str:
-    """How close an answer must be, in words: ``"0.1 % (0.001 near 0)"``."""
+    """How close an answer must be, in words: ``"0.5 % (0.001 near 0)"``."""
     return f"{rel * 100:g} % ({tol:g} near 0)" if rel else f"{tol:g}"
 
 
@@ -44,6 +47,20 @@ def wrap(difference: np.ndarray, period: float | None) -> np.ndarray:
     if period is None:
         return difference
     return difference - period * np.round(difference / period)
+
+
+_LENGTH = re.compile(r"(?<![A-Za-z])(?:mm|cm|dm|km|m)(?![A-Za-z])")
+
+
+def length_unit(unit: str | None) -> bool:
+    """Whether a unit involves a length (``mm``, ``m/s``…), so a factor of 1000 or 100 can
+    be a unit slip; ``None`` (no unit given) may be one too. A rate in ``rad/s`` or a time
+    in ``s`` cannot: a factor there has another cause (a missing ``/dt``).
+
+    >>> length_unit("mm/s²"), length_unit("rad/s"), length_unit("s"), length_unit(None)
+    (True, False, False, True)
+    """
+    return unit is None or bool(_LENGTH.search(unit))
 
 
 @dataclass(frozen=True)
@@ -125,7 +142,7 @@ def is_rounded(student: float, expected: float) -> bool:
 def keep_digits(setting: Setting) -> str:
     """The advice for an over-rounded number."""
     within = tolerance_text(setting.tol, setting.rel)
-    return f"keep at least 4 significant digits (answers within {within} pass)"
+    return f"{KEEP_DIGITS} (answers within {within} pass)"
 
 
 def names_text(names: list[str], most: int = 6) -> str:
@@ -175,7 +192,7 @@ def _whole_candidates(
                 f"You gave degrees: write {what} in radians (180° = π).",
             )
         )
-    if not setting.angle:
+    if not setting.angle and length_unit(setting.unit):
         for factor, unit in ((1000, "1 m = 1000 mm"), (100, "1 m = 100 cm")):
             found.append(
                 (

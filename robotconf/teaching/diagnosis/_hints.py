@@ -16,6 +16,7 @@ from typing import Any
 import numpy as np
 
 from ..reading._shown import show_entry, show_expected
+from ..reading._tolerance import SCALE_FLOOR
 from ._generic import is_rotation_like
 from ._rounding import coarse_roundings
 
@@ -34,7 +35,7 @@ NO_ANSWER = "No answer yet: replace None with your matrix."
 
 
 def close(a: np.ndarray, b: np.ndarray, tol: float) -> np.ndarray:
-    """Entry-wise ``|a − b| ≤ tol·max(1, |b|)`` at every sample point (axis 0).
+    """Entry-wise ``|a − b| ≤ tol·max(0.2, |b|)`` at every sample point (axis 0).
 
     Parameters
     ----------
@@ -46,7 +47,7 @@ def close(a: np.ndarray, b: np.ndarray, tol: float) -> np.ndarray:
     ndarray of bool, shape (...)
     """
     with np.errstate(invalid="ignore"):
-        ok = np.abs(a - b) <= tol * np.maximum(1.0, np.abs(b))
+        ok = np.abs(a - b) <= tol * np.maximum(SCALE_FLOOR, np.abs(b))
     return np.all(ok, axis=0)
 
 
@@ -218,7 +219,7 @@ def _group_hint(group: EntryGroup, student: Any, expected: Any, reveal: bool) ->
             else f"{'Entry' if one else 'Entries'} {entries_text(entries)} {'is' if one else 'are'}"
         )
         return (
-            f"{where} rounded too coarsely: keep at least 4 significant digits (to the "
+            f"{where} rounded too coarsely: keep 3 significant digits (to the "
             f"digits you kept, {'it is' if one else 'they are'} right)."
         )
     if group.kind == "rotation_sine":

@@ -24,6 +24,7 @@ from typing import Any
 
 import numpy as np
 
+from ..reading._tolerance import SCALE_FLOOR
 from ._candidate import Candidate
 from ._hints import close
 from ._rounding import coarse_roundings
@@ -147,7 +148,7 @@ def match(
             rows, cols = zip(*(explained - rounded), strict=True)
             s, c = s_values[:, rows, cols], candidate.values[:, rows, cols]
             with np.errstate(invalid="ignore", divide="ignore"):
-                gap = np.abs(s - c) / (tol * np.maximum(1.0, np.abs(c)))
+                gap = np.abs(s - c) / (tol * np.maximum(SCALE_FLOOR, np.abs(c)))
             if np.isfinite(gap).any():
                 residual = max(residual, float(np.nanmax(np.where(np.isfinite(gap), gap, 0))))
         found.append(

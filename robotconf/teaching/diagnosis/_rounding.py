@@ -93,9 +93,12 @@ def coarse_roundings(
         if np.ptp(expected) > 1e-12 * max(1.0, abs(target)):  # a formula of q, not a number
             continue
         value = float(typed)
-        unit = last_digit(value) or _ZERO_UNIT
-        if unit > 0.1 * (abs(target) if significant else max(1.0, abs(target))):
-            continue
-        if abs(value - target) <= 0.5 * unit * (1 + 1e-9):
+        units = [last_digit(value) or _ZERO_UNIT]
+        if typed.is_Integer and units[0] > 1:
+            units.append(1.0)  # 20 may be 19.86 to the units: its zero is a digit too
+        size = abs(target) if significant else max(1.0, abs(target))
+        if any(
+            unit <= 0.1 * size and abs(value - target) <= 0.5 * unit * (1 + 1e-9) for unit in units
+        ):
             found.add((r, c))
     return found

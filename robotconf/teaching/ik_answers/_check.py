@@ -23,6 +23,7 @@ from ..._validation import check_flag
 from ..checks._input import NO_ANSWER, check_text, parse_answer
 from ..reading._parser import ParserLimits
 from ..reading._shown import number_text, sentence
+from ..reading._tolerance import REL_TOL
 from ..reading._wrapper import answer_check, passed
 from ._diagnosis import SLIP_TOL, diagnose, nearest_solution
 from ._problem import IKProblem
@@ -117,7 +118,7 @@ def check_ik_solution(
     robot: Any,
     target: Any,
     *,
-    tol: float = 1e-3,
+    tol: float = REL_TOL,
     mode: str = "position",
     within_limits: bool = False,
     name: str | None = None,
@@ -138,8 +139,8 @@ def check_ik_solution(
         The point to reach, or a pose (in mode ``"position"`` only its point counts).
     tol : float
         Relative to the robot's size ``L = rc.characteristic_length(robot)``: right when
-        the end effector lies within ``tol·L`` of the target (by default 0.1 % of the
-        size, so angles typed with 4 significant digits pass) and, in mode ``"pose"``,
+        the end effector lies within ``tol·L`` of the target (by default 0.5 % of the
+        size, so angles typed with 3 significant digits pass) and, in mode ``"pose"``,
         its orientation within ``tol`` rad.
     mode : {"position", "pose"}
     within_limits : bool

@@ -102,7 +102,7 @@ def _rounded(problem: IKProblem, q: np.ndarray, subject: str) -> Finding | None:
         "too_rounded",
         f"{capital(subject)} is a solution rounded too much: its end effector misses the "
         f"target by {number_text(miss)} (within {number_text(problem.reach_tol)} passes); "
-        "keep at least 4 significant digits.",
+        "keep 3 significant digits.",
         solution,
     )
 

@@ -20,6 +20,7 @@ from ..checks._input import check_text
 from ..diagnosis._components import names_text
 from ..reading._parser import ParserLimits
 from ..reading._shown import number_text
+from ..reading._tolerance import REL_TOL
 from ..reading._wrapper import answer_check, passed
 from ._check import read_answer
 from ._diagnosis import SLIP_TOL, diagnose, elbow_joints, joint_before
@@ -208,7 +209,7 @@ def check_ik_solutions(
     robot: Any,
     target: Any,
     *,
-    tol: float = 1e-3,
+    tol: float = REL_TOL,
     mode: str = "position",
     within_limits: bool = False,
     name: str | None = None,

@@ -26,6 +26,7 @@ from ..checks._result import AnswerCheck
 from ..diagnosis._components import Setting, close, explain_components, names_text
 from ..reading._parser import ParserLimits
 from ..reading._shown import number_text, sentence
+from ..reading._tolerance import ABS_TOL, REL_TOL
 from ..reading._wrapper import answer_check, passed
 from ._answer import (
     arrange,
@@ -166,8 +167,8 @@ def check_profile(
     *,
     form: str | None = None,
     times: Any = None,
-    tol: float = 1e-3,
-    rel: float = 1e-3,
+    tol: float = ABS_TOL,
+    rel: float = REL_TOL,
     unit: str | None = None,
     name: str | None = None,
     reveal: bool = False,
@@ -193,7 +194,7 @@ def check_profile(
     times : array-like, shape (k,), optional
         The sample times (s) of a ``"velocity"`` answer (and only then).
     tol, rel : float
-        Each number is right within ``max(tol, rel·|expected|)``: 0.1 %, or 0.001 near
+        Each number is right within ``max(tol, rel·|expected|)``: 0.5 %, or 0.001 near
         zero, by default.
     unit : str, optional
         Shown with quoted numbers.

@@ -29,6 +29,7 @@ from ..._errors import InvalidInputError
 from ._numeric_eval import MAX_EVALUATED_NODES, NotEvaluable, TooLarge, complex_values, is_real
 from ._parser import MAX_NUMBER_BITS
 from ._shown import show_entry
+from ._tolerance import SCALE_FLOOR
 
 __all__ = [
     "MAX_ANSWER_NODES",
@@ -38,6 +39,7 @@ __all__ = [
     "UNDECIDED",
     "TOO_LARGE",
     "Judgement",
+    "agrees",
     "check_size",
     "judge",
     "screen_entry",
@@ -238,11 +240,23 @@ def _values(
         ) from None
 
 
+def agrees(s: np.ndarray, e: np.ndarray, tol: float) -> np.ndarray:
+    """Entry-wise: a student's number is the expected one, ``|s − e| ≤ tol·max(0.2, |e|)``.
+
+    The matrix checker's rule (:data:`~._tolerance.SCALE_FLOOR`): within ``tol`` of the
+    value, or of 0.2 near zero. NaN agrees with nothing.
+
+    >>> agrees(np.array([0.866, 0.87, 0.0009]), np.array([0.8660254, 0.8660254, 0.0]), 0.005)
+    array([ True,  True,  True])
+    """
+    with np.errstate(invalid="ignore", over="ignore"):
+        return np.asarray(np.abs(s - e) <= tol * np.maximum(SCALE_FLOOR, np.abs(e)))
+
+
 def _verdict(s: np.ndarray, e: np.ndarray, tol: float) -> str:
     finite_s, finite_e = np.isfinite(s), np.isfinite(e)
     both = finite_s & finite_e
-    with np.errstate(invalid="ignore", over="ignore"):
-        agree = np.abs(s - e) <= tol * np.maximum(1.0, np.abs(e))
+    agree = agrees(s, e, tol)
     if both.all() and agree.all():
         return RIGHT
     infinite_s = np.isinf(s.real) | np.isinf(s.imag)
@@ -271,7 +285,7 @@ def judge(
     k : int
         K.
     tol : float
-        Relative tolerance: ``|s − e| ≤ tol·max(1, |e|)``.
+        Relative tolerance: ``|s − e| ≤ tol·max(0.2, |e|)`` (:data:`SCALE_FLOOR`).
     field_of : callable (row, col) -> str
         The field naming a student's entry in errors, e.g. ``"student[0][2]"``.
 

@@ -16,21 +16,25 @@ from __future__ import annotations
 import hashlib
 import math
 from collections.abc import Callable, Sequence
-from typing import Any
+from typing import Any, TypeVar
 
 import numpy as np
 
 from ..._errors import InvalidInputError
 from ..._validation import check_finite_number
 
-__all__ = ["Variant", "MAX_ID_CHARS", "MAX_CHOICES"]
+__all__ = ["Variant", "MAX_ATTEMPTS", "MAX_ID_CHARS", "MAX_CHOICES"]
 
 #: Longest student id, lesson name or parameter name (characters).
 MAX_ID_CHARS = 64
 #: Largest number of values one draw chooses among.
 MAX_CHOICES = 1_000_000
+#: Most draws :meth:`Variant.screened` tries before it gives up.
+MAX_ATTEMPTS = 64
 
 _DOMAIN = "robotconf-variant-v1"
+
+T = TypeVar("T")
 
 
 def _check_text(value: Any, field: str) -> str:
@@ -104,13 +108,14 @@ class Variant:
     robotconf.InvalidInputError: student_id: empty: ''; allowed: non-empty printable text ...
     """
 
-    __slots__ = ("_student_id", "_lesson", "_drawn", "_specs")
+    __slots__ = ("_student_id", "_lesson", "_drawn", "_specs", "_attempt")
 
     def __init__(self, student_id: str, lesson: str) -> None:
         self._student_id = _check_text(student_id, "student_id").casefold()
         self._lesson = _check_text(lesson, "lesson")
         self._drawn: dict[str, Any] = {}
         self._specs: dict[str, tuple[Any, ...]] = {}
+        self._attempt = 0
 
     @property
     def student_id(self) -> str:
@@ -131,8 +136,79 @@ class Variant:
         return f"Variant(student_id={self._student_id!r}, lesson={self._lesson!r})"
 
     def _digest(self, name: str) -> bytes:
-        parts = (_DOMAIN, self._student_id, self._lesson, name)
+        parts = [_DOMAIN, self._student_id, self._lesson, name]
+        if self._attempt:  # a redraw: other numbers, as reproducible as the first
+            parts.append(f"attempt {self._attempt}")
         return hashlib.sha256("\0".join(parts).encode("utf-8")).digest()
+
+    def screened(
+        self,
+        draw: Callable[[Variant], T],
+        reveals: Callable[[T], bool],
+        *,
+        attempts: int = MAX_ATTEMPTS,
+    ) -> T:
+        """Numbers drawn by ``draw`` that reveal every typical mistake of the exercise.
+
+        The first draw is the plain one (the numbers the student would get without
+        screening); while ``reveals`` says a typical mistake would still pass with these
+        numbers, the same names are drawn again from the next attempt's digests. Every
+        attempt is as reproducible as the first: the same id gets the same numbers on
+        every machine.
+
+        Parameters
+        ----------
+        draw : callable
+            Draws the exercise's numbers from the variant it is given (``length``,
+            ``angle``, ``choice``) and returns them.
+        reveals : callable
+            Whether numbers make every typical mistake give a refused answer.
+        attempts : int
+            How many draws to try.
+
+        Returns
+        -------
+        object
+            What ``draw`` returned, for the first attempt that reveals; the values it
+            drew are recorded in :attr:`drawn` under their own names.
+
+        Raises
+        ------
+        InvalidInputError
+            When no attempt reveals (the ranges leave a mistake invisible too often).
+
+        Examples
+        --------
+        >>> v = Variant("demo", "lesson")
+        >>> q = v.screened(lambda w: w.angle("q", [0, 30]), lambda q: q != 0)
+        >>> round(float(np.degrees(q)), 6), round(float(np.degrees(v.drawn["q"])), 6)
+        (30.0, 30.0)
+        """
+        for attempt in range(attempts):
+            trial = Variant(self._student_id, self._lesson)
+            trial._attempt = attempt
+            value = draw(trial)
+            if reveals(value):
+                for name, drawn in trial._drawn.items():
+                    self._adopt(name, trial._specs[name], drawn)
+                return value
+        raise InvalidInputError(
+            "draw",
+            getattr(draw, "__name__", "draw"),
+            "ranges in which the typical mistakes change the answer",
+            problem=f"no draw in {attempts} attempts reveals every mistake:",
+        )
+
+    def _adopt(self, name: str, spec: tuple[Any, ...], value: Any) -> None:
+        if name in self._specs and self._specs[name] != spec:
+            raise InvalidInputError(
+                "name",
+                name,
+                "a new name, or the same range as before",
+                problem="already drawn with another range:",
+            )
+        self._specs[name] = spec
+        self._drawn[name] = value
 
     def _draw(
         self, name: Any, spec: tuple[Any, ...], count: int, pick: Callable[[int], Any]
