@@ -68,6 +68,7 @@ from .programs import (
 )
 from .teaching import (
     AnswerCheck,
+    Assignment,
     Derivation,
     DerivationStep,
     DHTableCheck,
@@ -167,6 +168,7 @@ __all__ = [
     "assert_dh_table",
     "DHTableCheck",
     "Variant",
+    "Assignment",
     # inverse kinematics
     "ik",
     "ik_all",

@@ -29,7 +29,9 @@ DH tables (judged by the robot they describe: joint axes and end-effector at see
     :func:`check_dh_table`, :func:`assert_dh_table`, :class:`DHTableCheck`,
     :func:`parse_dh_rows`
 Per-student exercise parameters (the same id gives the same numbers on every machine)
-    :class:`Variant`
+    :class:`Variant`; the course's exercises with them, screened so that every typical
+    slip gives a refused answer: :class:`Assignment` (:mod:`.exercises`),
+    :data:`EXERCISE_SLIPS`
 Student text (a whitelist parser: nothing is evaluated)
     :func:`parse_expression`, :func:`parse_matrix`, :class:`ParserLimits`
 
@@ -86,6 +88,7 @@ from .derivation import (
     symbolic_fits,
 )
 from .diagnosis import ROTATION_PATTERN, Candidate, generic_candidates, is_rotation_like
+from .exercises import EXERCISE_SLIPS, Assignment
 from .ik_answers import (
     IK_DIAGNOSES,
     IKCheck,
@@ -165,8 +168,10 @@ __all__ = [
     "assert_dh_table",
     "DHTableCheck",
     "parse_dh_rows",
-    # per-student variants
+    # per-student variants, and the course's exercises with them
     "Variant",
+    "Assignment",
+    "EXERCISE_SLIPS",
     # student text
     "parse_expression",
     "parse_matrix",

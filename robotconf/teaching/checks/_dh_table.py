@@ -45,7 +45,7 @@ from ._dh_table_text import (
     row_count_hint,
 )
 
-__all__ = ["DH_DIAGNOSES", "DHTableCheck", "check_dh_table", "assert_dh_table"]
+__all__ = ["DH_DIAGNOSES", "DHTableCheck", "assert_dh_table", "check_dh_table", "describes"]
 
 #: Every diagnosis code a :class:`DHTableCheck` may carry, with what it means.
 DH_DIAGNOSES = {
@@ -62,6 +62,8 @@ DH_DIAGNOSES = {
     "twist": "a z axis not turned onto the next joint's axis (a wrong α)",
     "a_sign": "one a with the wrong sign",
     "d_sign": "one d with the wrong sign",
+    "d_value": "a constant missing from one d (a forgotten height, a slide's start)",
+    "a_value": "a constant missing from one a (a forgotten link length)",
     "axis": "a joint axis in the wrong place, no single slip recognised",
     "reversed_axis": "a joint axis on the right line, pointing the other way",
     "end_effector": "every axis right, the end-effector not",
@@ -294,9 +296,59 @@ def _diagnose(
         match = _compare(ref, table, convention, end_effector)
         if match is not None and match.ok:
             return code, repair_hint(code, r, convention, repaired if reveal else None)
+    found = _length_repair(ref, rows[:suspects], rows, convention, end_effector)
+    if found is not None:
+        code, r, repaired = found
+        return code, repair_hint(code, r, convention, repaired if reveal else None)
     first = own.wrong[0] if own.wrong else None
     tool = bool(np.any(np.asarray(end_effector) != 0))
     return generic_hint(first, own.first_reversed, convention, len(rows), tool)
+
+
+def _length_repair(
+    ref: _Reference,
+    suspects: tuple[DHRow, ...],
+    rows: tuple[DHRow, ...],
+    convention: str,
+    end_effector: Any,
+) -> tuple[str, int, DHRow] | None:
+    """A constant left out of one row's d or a (a forgotten height, a slide's start): the
+    row has 0 there.
+
+    Adding ``c`` to ``d_r`` moves everything after it along joint r's axis; adding it to
+    ``a_r`` along ``x_r``. ``c`` is read off the end-effector's offset from the robot's
+    along that direction, averaged over the sample configurations, and kept when the
+    repaired table describes the robot.
+    """
+    try:
+        robot = Robot.from_dh(rows, convention=convention, end_effector=end_effector)
+    except InvalidInputError:
+        return None
+    gap = ref.end_effector - robot.end_effector(ref.q)  # (K, 3)
+    axes = joint_axes(robot, ref.q).direction  # (K, n, 3): z of joint r's own frame
+    poses = robot.frame_poses(ref.q)  # (K, n, 4, 4)
+    # Where two rows' d lie along one line either fixes the table: the later row (a slide
+    # written without its start, a height left out of the row that has it) comes first.
+    for r in reversed(range(len(suspects))):
+        # d_r is along the axis joint r moves about (standard: z_(r-1), modified: z_r)
+        along_d = axes[:, r, :]
+        along_a = poses[:, r, :3, 0] if convention == "standard" else None
+        for code, direction in (("d_value", along_d), ("a_value", along_a)):
+            if direction is None:
+                continue
+            c = float(np.mean(np.einsum("kj,kj->k", gap, direction)))
+            if abs(c) <= ref.tol * ref.scale:
+                continue
+            field = "d" if code == "d_value" else "a"
+            row = rows[r]
+            if row[1 if field == "d" else 2] != 0:  # a length written: not a forgotten one
+                continue
+            repaired = _with(row, **{field: float(row[1 if field == "d" else 2]) + c})
+            table = rows[:r] + (repaired,) + rows[r + 1 :]
+            match = _compare(ref, table, convention, end_effector)
+            if match is not None and match.ok:
+                return code, r, repaired
+    return None
 
 
 @answer_check
@@ -415,6 +467,12 @@ def _check(
         return fail("no_answer", [NO_ANSWER])
     parsed = parse_dh_rows(answer, values)
     if parsed.issues:
+        given = len(answer) if isinstance(answer, (list, tuple)) else 0
+        codes = {code for code, _ in parsed.issues}
+        if given > len(ref.letters) and codes == {"joint_variable"}:
+            # a row without a joint variable in a table that is too long: a constant
+            # offset written as a row of its own, not a variable forgotten
+            return fail("row_count", [row_count_hint(given, len(ref.letters))])
         return fail(parsed.issues[0][0], [hint for _, hint in parsed.issues])
     rows = parsed.rows
     if len(rows) != len(ref.letters):
@@ -429,6 +487,61 @@ def _check(
         return DHTableCheck(True, [], None, [], rows, convention, True)
     code, hint = _diagnose(ref, rows, convention, end_effector, own, reveal)
     return fail(code, [hint], rows, own.wrong, own.end_effector_ok)
+
+
+def _numeric_rows(answer: Any) -> bool:
+    return isinstance(answer, (list, tuple)) and all(
+        isinstance(row, tuple)
+        and len(row) == 5
+        and row[4] in ("R", "P")
+        and all(isinstance(x, float) for x in row[:4])
+        for row in answer
+    )
+
+
+#: The sampled robots :func:`describes` compares with, by robot and tolerance.
+_REFERENCES: dict[tuple[str, float], _Reference] = {}
+
+
+def describes(
+    answer: Any,
+    expected: Robot,
+    *,
+    convention: str = "standard",
+    end_effector: Any = (0.0, 0.0, 0.0),
+    tol: float = REL_TOL,
+) -> bool:
+    """Whether a table describes ``expected`` as :func:`check_dh_table` judges it, without
+    its diagnosis (for screening an exercise's numbers against many tables).
+
+    >>> import robotconf as rc
+    >>> arm = rc.Robot.from_dh([(0, 0, 40, 0, "R"), (0, 0, 30, 0, "R")])
+    >>> describes([("q1", 0, 40, 0), ("q2", 0, 30, 0)], arm)
+    True
+    >>> describes([("q1", 40, 0, 0), ("q2", 0, 30, 0)], arm)
+    False
+    """
+    convention = check_convention(convention)
+    end_effector = check_parameter_vector(end_effector, "end_effector")
+    key = (repr(expected), tol)
+    if key not in _REFERENCES:
+        if len(_REFERENCES) >= 64:
+            del _REFERENCES[next(iter(_REFERENCES))]
+        _REFERENCES[key] = _reference(expected, 8, 0, tol)  # check_dh_table's samples, seed
+    ref = _REFERENCES[key]
+    if _numeric_rows(answer):  # rows as numbers with their joint letter: nothing to parse
+        rows = tuple(tuple(row) for row in answer)
+    else:
+        parsed = parse_dh_rows(answer, None)
+        if parsed.issues:
+            return False
+        rows = parsed.rows
+    if len(rows) != len(ref.letters):
+        return False
+    if any(row[4] != letter for row, letter in zip(rows, ref.letters, strict=True)):
+        return False
+    match = _compare(ref, rows, convention, end_effector)  # type: ignore[arg-type]
+    return bool(match is not None and match.ok)
 
 
 def assert_dh_table(answer: Any, expected: Any, **options: Any) -> DHTableCheck:

@@ -348,6 +348,15 @@ def repair_hint(code: str, r: int, convention: str, repaired: DHRow | None = Non
             f"Row {i}: check the sign of {n.d}: it is measured along {n.z_d}, "
             f"from x{i - 1} to x{i}."
         ),
+        "d_value": (
+            f"Row {i}: {n.d} misses a constant: the distance along {n.z_d} from x{i - 1} to "
+            f"x{i} at q = 0 (a height, or where a slide starts) belongs in {n.d}, besides "
+            "the joint variable of a slide."
+        ),
+        "a_value": (
+            f"Row {i}: {n.a} misses a constant: the distance along {n.x_about} from "
+            f"{n.z_from} to {n.z_to} (a link's length) belongs in {n.a}."
+        ),
     }
     text = texts[code]
     if repaired is not None:

@@ -192,8 +192,9 @@ def _whole_candidates(
                 f"You gave degrees: write {what} in radians (180° = π).",
             )
         )
-    if not setting.angle and length_unit(setting.unit):
-        for factor, unit in ((1000, "1 m = 1000 mm"), (100, "1 m = 100 cm")):
+    if not setting.angle:
+        factors = ((1000, "1 m = 1000 mm"), (100, "1 m = 100 cm"))
+        for factor, unit in factors if length_unit(setting.unit) else ():
             found.append(
                 (
                     "unit_factor",

@@ -45,6 +45,7 @@ PROFILE_DIAGNOSES = {
     "normalized_time": "polynomial coefficients in τ = t/T instead of t",
     "descending_order": "polynomial coefficients with the highest power first",
     "distance_not_covered": "trapezoid numbers that do not cover the distance",
+    "largest_move": "the duration of the joint with the largest move, not the slowest's",
 }
 
 _FORMULA = {"cubic": "u = 3τ² − 2τ³", "quintic": "u = 10τ³ − 15τ⁴ + 6τ⁵"}
@@ -96,9 +97,20 @@ HINTS = {
         "slower than their limits and all arrive together."
     ),
     "mixed_limits": (
-        "Here one joint's speed limit and another joint's acceleration limit both bind: "
-        "take V = min_j v_j/|Δ_j| and A = min_j a_j/|Δ_j| for the common law u(t), and "
-        "the duration from V and A."
+        "Here one joint's speed limit and another joint's acceleration limit both bind, "
+        "so the synchronized move is slower than every joint alone: take "
+        "V = min_j v_j/|Δ_j| and A = min_j a_j/|Δ_j| for the common law u(t), and the "
+        "duration from V and A."
+    ),
+    "largest_move": (
+        "The joint with the largest move is not always the slowest: a joint's time "
+        "depends on its own speed and acceleration limits. Work out every joint's time "
+        "(or V = min_j v_j/|Δ_j| and A = min_j a_j/|Δ_j|) before you pick."
+    ),
+    "no_triangle_check": (
+        "d/v + v/a holds only for a joint that reaches its speed limit (d ≥ v²/a): a "
+        "shorter move is a triangle, T = 2·√(d/a). Check each joint before you take "
+        "the longest time."
     ),
     "swapped": (
         "These are the {other}'s numbers ({other_formula}): the task asks for the {kind} "
@@ -204,7 +216,9 @@ def _fill(key: str, task: ProfileTask, joint: str = "") -> str:
     )
 
 
-def profile_slips(task: ProfileTask, form: str, times: Any) -> list[Slip]:
+def profile_slips(
+    task: ProfileTask, form: str, times: Any, *, keep_equal: bool = False
+) -> list[Slip]:
     """Every slip this task and form recognise, in order of priority.
 
     Parameters
@@ -215,11 +229,15 @@ def profile_slips(task: ProfileTask, form: str, times: Any) -> list[Slip]:
     times : array-like or None
         The sample times of a ``velocity`` answer.
 
+    keep_equal : bool
+        Keep the slips whose answer equals the right one (for screening an exercise's
+        numbers: such numbers hide the slip).
+
     Returns
     -------
     list of Slip
         Slips whose answer equals the right one are left out (they cannot be told
-        apart from it).
+        apart from it), unless ``keep_equal``.
 
     Examples
     --------
@@ -237,7 +255,7 @@ def profile_slips(task: ProfileTask, form: str, times: Any) -> list[Slip]:
     def add(code: str, values: np.ndarray, hint: str) -> None:
         values = np.asarray(values, dtype=float)
         same = values.shape == right.shape and np.allclose(values, right, rtol=1e-9, atol=0)
-        if np.isfinite(values).all() and not same:
+        if np.isfinite(values).all() and (keep_equal or not same):
             found.append(Slip(code, values, hint))
 
     if n > 1 and task.has_limits and form in ("duration", "peak_speed", "velocity"):
@@ -255,6 +273,16 @@ def profile_slips(task: ProfileTask, form: str, times: Any) -> list[Slip]:
                     hint = _fill("own_duration", task, joint=name)
                     add("not_synchronized", np.array(law.duration), hint)
             add("mixed_limits", np.array(slowest), _fill("mixed_limits", task))
+            largest = int(np.argmax(np.abs(task.distance)))
+            add("largest_move", np.array(own[largest].duration), _fill("largest_move", task))
+            if task.kind == "trapezoidal":
+                # d/v + v/a for every joint, short moves too: no triangle check
+                limits = task.limits
+                assert limits is not None
+                reach = np.abs(task.distance)
+                moving = reach > 0
+                formula = reach[moving] / limits[0][moving] + limits[0][moving] / limits[1][moving]
+                add("triangle_as_trapezoid", np.array(formula.max()), HINTS["no_triangle_check"])
     laws = _trapezoid_laws(task) if task.kind == "trapezoidal" else _polynomial_laws(task)
     for code, key, law in laws:
         values = read(task.distance, task.start, form, times, [law] * n, shared=True)

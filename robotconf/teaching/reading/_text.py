@@ -124,12 +124,29 @@ def allowed_text(names: Iterable[str]) -> str:
     )
 
 
+#: Symbol tables already built, by their names (making sympy symbols is not free, and a
+#: DH table parses a dozen entries with the same names).
+_TABLES: dict[tuple[str, ...], dict[str, Any]] = {}
+
+
 def symbol_table(symbols: Iterable[Any] | None) -> dict[str, Any]:
-    import sympy
 
     names = DEFAULT_SYMBOL_NAMES if symbols is None else symbols
     if isinstance(names, (str, bytes)):
         raise InvalidInputError("symbols", names, "a list of names such as ['q1', 'q2']")
+    key = tuple(names) if isinstance(names, (tuple, list)) else None
+    if key is not None and all(isinstance(x, str) for x in key):
+        if key not in _TABLES:
+            if len(_TABLES) >= 256:
+                _TABLES.clear()
+            _TABLES[key] = _build(key)
+        return dict(_TABLES[key])
+    return _build(names)
+
+
+def _build(names: Iterable[Any]) -> dict[str, Any]:
+    import sympy
+
     table = {}
     for item in names:
         name = item.name if isinstance(item, sympy.Symbol) else item

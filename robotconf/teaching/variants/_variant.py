@@ -147,6 +147,7 @@ class Variant:
         reveals: Callable[[T], bool],
         *,
         attempts: int = MAX_ATTEMPTS,
+        first: int = 0,
     ) -> T:
         """Numbers drawn by ``draw`` that reveal every typical mistake of the exercise.
 
@@ -165,6 +166,8 @@ class Variant:
             Whether numbers make every typical mistake give a refused answer.
         attempts : int
             How many draws to try.
+        first : int
+            The first attempt's number (0: the plain draw).
 
         Returns
         -------
@@ -184,7 +187,7 @@ class Variant:
         >>> round(float(np.degrees(q)), 6), round(float(np.degrees(v.drawn["q"])), 6)
         (30.0, 30.0)
         """
-        for attempt in range(attempts):
+        for attempt in range(first, first + attempts):
             trial = Variant(self._student_id, self._lesson)
             trial._attempt = attempt
             value = draw(trial)
@@ -192,6 +195,8 @@ class Variant:
                 for name, drawn in trial._drawn.items():
                     self._adopt(name, trial._specs[name], drawn)
                 return value
+            if not trial._drawn:  # nothing to draw again: every attempt is this one
+                break
         raise InvalidInputError(
             "draw",
             getattr(draw, "__name__", "draw"),
