@@ -295,7 +295,7 @@ def test_markers_in_course_cells_are_refused():
 @pytest.mark.parametrize(
     ("cells", "message"),
     [
-        ([("answer", "a = 1\nb = 2")], "exactly one variable"),
+        ([("answer", "a = 1\nb = 2")], "one answer_ variable"),
         ([("answer", "answer_1 = 1")], "followed by its check cell"),
         ([("check", "f(answer_9)")], "check cells that use an answer variable"),
     ],

@@ -46,6 +46,7 @@ __all__ = [
     "joint_type_hint",
     "repair_hint",
     "row_count_hint",
+    "swapped_columns_hint",
 ]
 
 #: One numeric row in robotconf's order: θ offset, d offset, a, α (radians), "R" or "P".
@@ -366,6 +367,21 @@ def repair_hint(code: str, r: int, convention: str, repaired: DHRow | None = Non
             f"α = {_number(alpha)} ({joint}; q{i} added to {'θ' if joint == 'R' else 'd'})."
         )
     return text
+
+
+def swapped_columns_hint(rows: list[int], convention: str) -> str:
+    """a and d swapped in several rows: the table's columns mixed up.
+
+    >>> swapped_columns_hint([1, 2], "standard")  # doctest: +ELLIPSIS
+    'In rows 1 and 2, a and d look swapped: ...'
+    """
+    listed = ", ".join(str(r) for r in rows[:-1]) + f" and {rows[-1]}"
+    along = "z_(i-1)" if convention == "standard" else "z_i"
+    return (
+        f"In rows {listed}, a and d look swapped: the columns are (θ, d, a, α) — d is the "
+        f"distance along {along} (between the x axes), a the distance along the common "
+        "normal x (between the z axes)."
+    )
 
 
 def convention_hint(asked: str, other: str, whole: bool) -> str:

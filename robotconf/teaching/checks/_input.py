@@ -20,7 +20,7 @@ from ..._validation import check_finite_number, check_flag
 from ..diagnosis._components import Setting
 from ..reading._numeric_eval import NotEvaluable, TooLarge, complex_values
 from ..reading._parser import ParserLimits
-from ..reading._shown import number_text
+from ..reading._shown import number_text, show_entry
 from ._matrix import check_matrix
 
 __all__ = [
@@ -61,11 +61,12 @@ class Parsed:
 
 
 def _entry_text(entry: Any) -> str:
+    """An entry as hints quote it: numbers and the numbers inside a formula as decimals
+    (``50000*sin(2.198)``, not the exact fraction the parser keeps)."""
     if entry.is_Number:
         value = float(entry)
         return number_text(value) if np.isfinite(value) else str(entry.evalf(4))
-    text = str(entry)
-    return text if len(text) <= 40 else text[:37] + "..."
+    return show_entry(entry, limit=40)
 
 
 def check_text(value: Any, field: str) -> str | None:

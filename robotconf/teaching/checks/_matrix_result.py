@@ -34,6 +34,8 @@ MATRIX_DIAGNOSES = {
     "parking_pose": "the answer at q = 0 instead of the asked pose",
     "joint_left_out": "one joint's q left out",
     "swapped_joints": "two joints' q exchanged",
+    "absolute_angle": "a joint angle taken against the base where it is relative to the "
+    "previous parallel joint",
     "unit_slip": "a length in the wrong unit (×1000)",
     "coarse_rounding": "numbers rounded to too few digits",
     "rotation_direction_all": "every module of a kind turned the wrong way",

@@ -41,7 +41,7 @@ from ._input import (
     parse_answer,
     read_options,
 )
-from ._result import AnswerCheck
+from ._result import AnswerCheck, explains_all
 
 __all__ = ["check_angle", "check_value", "check_vector", "finish", "judge_components"]
 
@@ -61,7 +61,7 @@ def finish(
         return AnswerCheck(True, [], None, name, student, expected, **more)
     if hint and codes[:1] != ["no_answer"]:
         hints = [*hints, hint]
-    more.setdefault("complete", len(set(codes)) == 1)
+    more.setdefault("complete", explains_all(codes))
     return AnswerCheck(
         False, hints, codes[0] if codes else "wrong", name, student, expected, **more
     )

@@ -6,7 +6,7 @@ import html
 from dataclasses import dataclass, field
 from typing import Any
 
-__all__ = ["AnswerCheck", "DIAGNOSES"]
+__all__ = ["AnswerCheck", "DIAGNOSES", "UNNAMED", "explains_all"]
 
 #: Every diagnosis code an :class:`AnswerCheck` may carry, with what it means.
 DIAGNOSES = {
@@ -28,6 +28,21 @@ DIAGNOSES = {
     "extra": "a value that is not a solution",
     "wrong": "wrong, with no recognised mistake",
 }
+
+
+#: Codes that name no mistake: nothing to read, the wrong layout, or wrong without a reason.
+UNNAMED = frozenset(
+    {"no_answer", "not_a_number", "too_complicated", "shape", "wrong", "missing", "extra"}
+)
+
+
+def explains_all(codes: list[str]) -> bool:
+    """Whether the hints' codes are one named mistake, which explains the whole answer.
+
+    >>> explains_all(["sign_error"]), explains_all(["sign_error", "wrong"]), explains_all(["wrong"])
+    (True, False, False)
+    """
+    return len(set(codes)) == 1 and codes[0] not in UNNAMED
 
 
 @dataclass(frozen=True, eq=False)

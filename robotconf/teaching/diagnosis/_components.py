@@ -107,7 +107,7 @@ def close(
 
 def rounded(student: np.ndarray, expected: np.ndarray) -> np.ndarray:
     """Element-wise: ``student`` is ``expected`` rounded to 1–3 significant digits or to
-    0–3 decimals (a rounding that changes it).
+    0–3 decimals (a rounding that changes it). A 0 keeps no digit: it is never a rounding.
 
     Parameters
     ----------
@@ -126,7 +126,7 @@ def rounded(student: np.ndarray, expected: np.ndarray) -> np.ndarray:
         table = np.stack(forms, axis=-1)
         hit = np.isclose(s, table, rtol=1e-9, atol=1e-12)
         changed = ~np.isclose(table, e[..., None], rtol=1e-9, atol=0.0)
-    usable = (e != 0) & np.isfinite(e) & (np.abs(e) <= 1e15)
+    usable = (e != 0) & np.isfinite(e) & (np.abs(e) <= 1e15) & (s[..., 0] != 0)
     return np.asarray(np.any(hit & changed, axis=-1) & usable)
 
 

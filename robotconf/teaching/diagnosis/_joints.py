@@ -13,7 +13,7 @@ from itertools import combinations
 
 import numpy as np
 
-from ...kinematics import DHLink
+from ...kinematics import DHLink, joint_axes
 from ._candidate import Candidate, fmt, vector
 from ._context import MistakeContext
 
@@ -80,6 +80,29 @@ def _exchanged(context: MistakeContext, i: int, j: int) -> Candidate:
     q[:, [i, j]] = q[:, [j, i]]
     reading = f"exchanging {first} and {second}"
     return Candidate("swapped_joints", message, context.value(q=q), reading)
+
+
+def _absolute(context: MistakeContext, moving: list[int]) -> list[Candidate]:
+    """A joint angle used as the link's angle against the base, where it is relative to
+    the previous joint about a parallel axis (q3 read as the forearm's own angle)."""
+    robot = context.robot
+    axes = joint_axes(robot, np.zeros(robot.n)).direction
+    revolute = [j for j in moving if robot.joint_types[j] == "revolute"]
+    found = []
+    for i, j in zip(revolute, revolute[1:], strict=False):
+        if abs(abs(float(axes[i] @ axes[j])) - 1.0) > 1e-9:
+            continue
+        names = robot.coordinate_names
+        message = (
+            f"{names[j]} is used as an absolute angle: joint {j + 1} turns relative to "
+            f"link {i + 1} (their axes are parallel), so the link after it points at "
+            f"{names[i]} + {names[j]} — the angles add up along the chain."
+        )
+        q = context.q.copy()
+        q[:, j] = context.q[:, j] - context.q[:, i]
+        reading = f"taking {names[j]} as the link's angle against the base"
+        found.append(Candidate("absolute_angle", message, context.value(q=q), reading))
+    return found
 
 
 def _dh_degrees(context: MistakeContext, moving: list[int]) -> list[Candidate]:
@@ -152,4 +175,6 @@ def joint_candidates(context: MistakeContext) -> list[Candidate]:
             continue
         if not context.numeric_q or np.any(context.q[:, i] != context.q[:, j]):
             candidates.append(_exchanged(context, i, j))
+    if context.numeric_q:
+        candidates += _absolute(context, moving)
     return candidates + _dh_degrees(context, moving)

@@ -63,10 +63,15 @@ EXERCISE_SLIPS: dict[str, str] = {}
 def name_slip(result: Any, numbers: Numbers, named: Named | None, equal: Any) -> Any:
     """``result`` with the exercise's own slip as its diagnosis, when the answer is one.
 
-    A verdict that is ok, or whose diagnosis already explains the whole answer, is kept.
-    ``equal(student, answer)`` says whether the parsed answer is a slip's answer.
+    A verdict that is ok, or whose diagnosis already explains the whole answer, is kept
+    (unless that diagnosis is only a guess of too coarse rounding: the exercise's own slip,
+    matched to 3 digits, says more). ``equal(student, answer)`` says whether the parsed
+    answer is a slip's answer.
     """
-    if named is None or result.ok or getattr(result, "complete", False):
+    if named is None or result.ok:
+        return result
+    codes = set(getattr(result, "mistakes", None) or [getattr(result, "diagnosis", None)])
+    if getattr(result, "complete", False) and codes != {"too_rounded"}:
         return result
     student = getattr(result, "student", None)
     if student is None:

@@ -35,6 +35,9 @@ EXERCISE_SLIPS.update(
         "centripetal_only": "the centripetal term of the acceleration alone",
         "tangential_only": "the tangential term of the acceleration alone",
         "q3_at_amplitude": "q3 = A just before the drop, where it is A·(T − dt)/T",
+        "rate_inverted": "dq3/dt taken as T/A, the ramp's rate upside down",
+        "omega_as_f": "the sine's angular frequency taken as f, where it is 2πf",
+        "degrees_in_sin": "q3 in degrees fed to sin and cos",
     }
 )
 
@@ -117,6 +120,14 @@ def _velocity_named(n: Any) -> dict[str, tuple[Any, str]]:
             _velocity(n, amplitude * t3 / period, rate).tolist(),
             "q3 restarts at 0 after every drop: at t3 it is A·(t3 mod T)/T, not A·t3/T.",
         ),
+        "rate_inverted": (
+            _velocity(n, q3, period / amplitude).tolist(),
+            "On a ramp q3 rises by A in T seconds: dq3/dt = A/T, not T/A.",
+        ),
+        "degrees_in_sin": (
+            _velocity(n, float(np.degrees(q3)), rate).tolist(),
+            "q3 is in radians: sin(q3) and cos(q3) of the radians, not of degrees.",
+        ),
     }
 
 
@@ -138,6 +149,19 @@ def _terms(n: Any) -> tuple[np.ndarray, np.ndarray]:
     centripetal = l3 * np.array([-np.cos(q), 0, np.sin(q)]) * qd**2
     tangential = l3 * np.array([-np.sin(q), 0, -np.cos(q)]) * qdd
     return centripetal, tangential
+
+
+def _omega_as_f(n: Any) -> np.ndarray:
+    """The acceleration with ω = f in q3 = B sin(ωt) (2π left out)."""
+    b, f, t, l3 = n["B"], n["f4"], n["t4"], n["l3"]
+    q, qd, qdd = b * np.sin(f * t), b * f * np.cos(f * t), -b * f**2 * np.sin(f * t)
+    return np.asarray(
+        l3
+        * (
+            np.array([-np.cos(q), 0, np.sin(q)]) * qd**2
+            + np.array([-np.sin(q), 0, -np.cos(q)]) * qdd
+        )
+    )
 
 
 def _acceleration(n: Any) -> np.ndarray:
@@ -240,6 +264,10 @@ register(
                 _terms(n)[1].tolist(),
                 "Only the tangential term: add the centripetal term d²p/dq3² · q3'², which "
                 "does not vanish while q3 moves.",
+            ),
+            "omega_as_f": (
+                _omega_as_f(n).tolist(),
+                "The sine's angular frequency is ω = 2πf (rad/s), not f: q3 = B sin(2πf t).",
             ),
         },
         shows=lambda n: f"$B = {n['B']:g}$ rad, $f = {n['f4']:g}$ Hz, $t_4 = {n['t4']:g}$ s",

@@ -59,9 +59,25 @@ def _arm(variant: Any, _: Any) -> dict[str, Any]:
     }
 
 
+#: Both solutions of an arm and target, computed once (screening asks many times).
+_SOLUTIONS: dict[tuple[float, ...], np.ndarray] = {}
+
+
+def _solutions(n: Any) -> np.ndarray:
+    """The arm's IK solutions for the target, shape (2, 2) (a read-only array)."""
+    key = (float(n["l1"]), float(n["l2"]), *(float(x) for x in n["target"]))
+    if key not in _SOLUTIONS:
+        if len(_SOLUTIONS) >= 1024:
+            _SOLUTIONS.clear()
+        solutions = np.array(ik_all(n["arm"], n["target"]).q, dtype=float)
+        solutions.flags.writeable = False
+        _SOLUTIONS[key] = solutions
+    return _SOLUTIONS[key]
+
+
 def _ik_slips(n: Any) -> dict[str, Any]:
     """One solution with a slip: atan for atan2, the other branch's q2, degrees, inner angle."""
-    solutions = ik_all(n["arm"], n["target"]).q
+    solutions = _solutions(n)
     right = solutions[0]
     x, y = n["target"][:2]
     return {
@@ -86,7 +102,7 @@ def _reaches(given: Any, n: Any) -> bool:
 def _both_fast(given: Any, n: Any) -> bool:
     rows = np.asarray(given, dtype=float).reshape(-1, 2)
     problem = IKProblem(n["arm"], n["target"], "position", 5e-3)
-    solutions = ik_all(n["arm"], n["target"]).q
+    solutions = _solutions(n)
     if len(rows) != len(solutions) or not problem.reaches(rows).all():
         return False
     found = {problem.closest(row, solutions)[0] for row in rows}
@@ -94,7 +110,7 @@ def _both_fast(given: Any, n: Any) -> bool:
 
 
 def _both_slips(n: Any) -> dict[str, Any]:
-    first = ik_all(n["arm"], n["target"]).q[0].tolist()
+    first = _solutions(n)[0].tolist()
     found: dict[str, Any] = {"one_missing": [first], "the_same_twice": [first, first]}
     found.update({k: [first, v] for k, v in _ik_slips(n).items()})
     return found
@@ -111,7 +127,7 @@ register(
         1,
         "one IK solution by hand",
         _arm,
-        lambda n: ik_all(n["arm"], n["target"]).q[0].tolist(),
+        lambda n: _solutions(n)[0].tolist(),
         lambda given, n: checkers().check_ik_solution(
             given,
             n["arm"],
@@ -129,7 +145,7 @@ register(
         2,
         "both IK solutions",
         lambda v, earlier: {},
-        lambda n: ik_all(n["arm"], n["target"]).q.tolist(),
+        lambda n: _solutions(n).tolist(),
         lambda given, n: checkers().check_ik_solutions(
             given,
             n["arm"],
@@ -138,11 +154,9 @@ register(
             hint="Check each solution with arm.end_effector(q) before you hand it in.",
         ),
         lambda n: {
-            "one_missing": [ik_all(n["arm"], n["target"]).q[0].tolist()],
-            "the_same_twice": [ik_all(n["arm"], n["target"]).q[0].tolist()] * 2,
-            **{
-                k: [ik_all(n["arm"], n["target"]).q[0].tolist(), v] for k, v in _ik_slips(n).items()
-            },
+            "one_missing": [_solutions(n)[0].tolist()],
+            "the_same_twice": [_solutions(n)[0].tolist()] * 2,
+            **{k: [_solutions(n)[0].tolist(), v] for k, v in _ik_slips(n).items()},
         },
         None,
         _both_fast,

@@ -212,6 +212,9 @@ EXERCISE_SLIPS.update(
         "counted_from_1": "move indices counted from 1 where the list counts from 0",
         "ptp_counted": "the PTP into the stretched pose counted too",
         "joint_1_speed": "joint 1's speed where joint 2's is asked",
+        "x_left_out": "v/(l1·l2·sin q2): the factor x* of J⁻¹ left out",
+        "length_for_x": "L, the arm's length, where the tip's x* belongs",
+        "cos_for_sin": "cos q2 where det J = l1·l2·sin q2",
     }
 )
 
@@ -276,6 +279,30 @@ def _speeds(n: Any) -> np.ndarray:
     return np.abs(np.linalg.solve(jacobian(arm, q)[:2], [n["v_6"], 0]))
 
 
+def _speed_named(n: Any) -> dict[str, tuple[Any, str]]:
+    l1, l2, x_star, v = n["l1"], n["l2"], n["x_star"], n["v_6"]
+    q2 = float(np.arccos((x_star**2 - l1**2 - l2**2) / (2 * l1 * l2)))
+    det = l1 * l2 * np.sin(q2)
+    return {
+        "joint_1_speed": (
+            float(_speeds(n)[0]),
+            "That is joint 1's speed: the question asks for joint 2.",
+        ),
+        "x_left_out": (
+            float(v / det),
+            "The second row of J⁻¹ (v, 0) is v·x/det J: the tip's x* is part of it.",
+        ),
+        "length_for_x": (
+            float(v * (l1 + l2) / det),
+            "Use the tip's x* where it passes, not the arm's length L.",
+        ),
+        "cos_for_sin": (
+            float(v * x_star / (l1 * l2 * np.cos(q2))),
+            "det J = l1·l2·sin q2 (the arm is singular stretched, at q2 = 0), not cos q2.",
+        ),
+    }
+
+
 def _x_star(variant: Any, earlier: Any) -> dict[str, Any]:
     length = earlier["L"]
     x_star = round(variant.choice("x* share", [0.85, 0.88, 0.9, 0.92, 0.94]) * length, 4)
@@ -296,12 +323,7 @@ register(
             "hint": "Solve J·dq = (v, 0) at the pose with the tip at (x*, 0): det J = "
             "l1·l2·sin q2, and q2 from the law of cosines (lesson 11).",
         },
-        named=lambda n: {
-            "joint_1_speed": (
-                float(_speeds(n)[0]),
-                "That is joint 1's speed: the question asks for joint 2.",
-            )
-        },
+        named=_speed_named,
         length=False,
         shows=lambda n: f"$x^* = {n['x_star']:g}$ m, $v = {n['v_6']:.4g}$ m/s",
     )

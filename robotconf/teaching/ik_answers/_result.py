@@ -7,7 +7,7 @@ import html
 from dataclasses import dataclass, field
 from typing import Any
 
-from ..checks._result import AnswerCheck
+from ..checks._result import AnswerCheck, explains_all
 
 __all__ = ["IKCheck", "IK_DIAGNOSES", "verdict"]
 
@@ -97,5 +97,5 @@ def verdict(
         return IKCheck(True, [], None, name, student, expected, **more)
     if hint and codes[:1] != ["no_answer"]:
         hints = [*hints, hint]
-    more.setdefault("complete", len(set(codes)) == 1)
+    more.setdefault("complete", explains_all(codes))
     return IKCheck(False, hints, codes[0], name, student, expected, **more)
