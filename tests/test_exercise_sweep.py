@@ -8,8 +8,9 @@ asserts, straight against the checker's mistake models (no notebook runs):
 - every id gets numbers (screening never runs out of draws);
 - with them the right answer passes and no typical slip does;
 - on a sample of ids, the same holds with the notebook's full check (with its
-  diagnosis), not only the quick numeric rule screening uses, and the full check
-  names the slip instead of a bare "wrong" for most of them.
+  diagnosis), not only the quick numeric rule screening uses; the check names nearly
+  every slip, and a named slip earns a quarter to three quarters of the exercise's
+  points by the course's rubric.
 
 Drawn numbers come from short lists, so many ids share them; verdicts are cached per
 numbers, which keeps the sweep to about a minute of CPU.
@@ -21,7 +22,10 @@ import numpy as np
 import pytest
 
 import robotconf as rc
+from robotconf.grading import award, names_a_slip, read_weights
 from robotconf.teaching.exercises import registered
+
+from .course_support import COURSE
 
 LESSONS = sorted({exercise.lesson for exercise in registered()})
 IDS = [f"student-{i:03d}" for i in range(200)]
@@ -62,14 +66,16 @@ def test_no_typical_slip_passes_for_any_of_200_ids(lesson):
     assert not hidden, hidden[:5]
 
 
-def _names_the_slip(result) -> bool:
-    codes = getattr(result, "mistakes", None) or [getattr(result, "diagnosis", None)]
-    return any(code not in (None, "wrong") for code in codes)
+@pytest.fixture(scope="module")
+def weights():
+    return read_weights(COURSE / "kit" / "weights.md")
 
 
 @pytest.mark.parametrize("lesson", LESSONS)
-def test_the_full_check_refuses_every_slip_on_sampled_ids(lesson):
-    """The notebook's check itself, with its diagnosis: right passes, every slip fails."""
+def test_the_full_check_refuses_every_slip_and_the_rubric_credits_it(lesson, weights):
+    """The notebook's check itself, with its diagnosis, on sampled ids: the right answer
+    passes; every slip fails, and one the check names earns a quarter to three quarters
+    of the points by the course's rubric (course/kit/weights.md)."""
     named, total, failures = 0, 0, []
     for student in SAMPLED:
         task = rc.Assignment(lesson, student)
@@ -77,15 +83,24 @@ def test_the_full_check_refuses_every_slip_on_sampled_ids(lesson):
             numbers = task.numbers
             if not exercise.accepts(exercise.answer(numbers), numbers, full=True):
                 failures.append((student, exercise.number, "right answer refused"))
+            points = weights.points_of(lesson, exercise.number)
+            rubric = weights.rubric(lesson, exercise.number, points)
             for slip, answer in exercise.slips(numbers).items():
                 result = exercise.check(_as_typed(answer), numbers)
+                earned = award(result, rubric).score / points
                 total += 1
-                named += _names_the_slip(result)
                 if result.ok:
-                    failures.append((student, exercise.number, slip))
+                    failures.append((student, exercise.number, slip, "accepted"))
+                elif names_a_slip(result.diagnosis):
+                    named += 1
+                    if not 0.25 <= earned <= 0.75:
+                        failures.append((student, exercise.number, slip, earned))
+                elif earned > 0.75:  # unnamed: what its right numbers earn, at most 3/4
+                    failures.append((student, exercise.number, slip, earned))
     assert not failures, failures[:5]
-    # most slips get a diagnosis of their own, not a bare "wrong"
-    assert named >= 0.6 * total, (named, total)
+    # the check names nearly every slip; the others are one IK solution of two (half by
+    # the numbers), lesson 12's "no move" and "every move" (nothing)
+    assert named >= 0.85 * total, (named, total)
 
 
 def _as_typed(answer):

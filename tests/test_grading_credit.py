@@ -106,7 +106,9 @@ def test_credit_of_other_answer_kinds():
     assert award(rc.check_vector([0, 35], [0, 35, -40]), Rubric(1)).score == 0.0
     assert award(rc.check_set([np.pi], [0, np.pi]), Rubric(1)).score == 0.5
     assert award(rc.check_set([np.pi, 0], [0, np.pi]), Rubric(1)).score == 1.0
-    assert award(rc.check_set([0, 2], [0, np.pi]), Rubric(1)).score == 0.0
+    # one of the two right, a wrong one in the other's place: half
+    assert award(rc.check_set([0, 2], [0, np.pi]), Rubric(1)).score == 0.5
+    assert award(rc.check_set([0, 2, 5], [0, np.pi]), Rubric(1)).score == 0.0
     # 3 is π to one digit: a named slip (too rounded) that explains the whole answer
     assert award(rc.check_set([0, 3], [0, np.pi]), Rubric(1)).score == 0.5
     # A trapezoid with t_a = 2v/a: a named slip (1 of 3 numbers right would be 1/3).

@@ -12,6 +12,8 @@ The rubric: credit for the right method
     :class:`Rubric`, :func:`award`, :class:`Award`, :func:`names_a_slip`,
     :data:`SLIP_WORDS`, :func:`points_for`, :func:`credit_counts`,
     :func:`graded_entries`
+The course's weighting table (course/kit/weights.md)
+    :func:`read_weights`, :func:`find_weights`, :class:`Weights`
 Answers that ask robotconf for themselves
     :func:`robotconf_calls`, :data:`FLAG`
 Release for nbgrader
@@ -40,6 +42,7 @@ from ._points import credit_counts, graded_entries, points_for
 from ._release import Release, ReleasedExercise, release_course, source_notebook
 from ._rubric import SLIP_WORDS, Award, Rubric, award, names_a_slip
 from ._shortcuts import FLAG, robotconf_calls
+from ._weights import Weights, find_weights, read_weights
 
 __all__ = [
     # in a graded notebook
@@ -53,6 +56,10 @@ __all__ = [
     "points_for",
     "credit_counts",
     "graded_entries",
+    # the weighting table
+    "read_weights",
+    "find_weights",
+    "Weights",
     # answers that ask robotconf for themselves
     "robotconf_calls",
     "FLAG",

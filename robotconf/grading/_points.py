@@ -149,7 +149,9 @@ def credit_counts(result: Any) -> tuple[int, int] | None:
     >>> from robotconf import check_set, check_vector
     >>> credit_counts(check_vector([0, 35, 40], [0, 35, -40]))
     (1, 2)
-    >>> credit_counts(check_set([0, 3], [0, np.pi]))  # π missing, 3 extra
+    >>> credit_counts(check_set([0, 3], [0, np.pi]))  # 3 where π belongs: one of two
+    (1, 2)
+    >>> credit_counts(check_set([0, 3, 5], [0, np.pi]))  # and 5 too many
     (2, 2)
     """
     kind = getattr(result, "kind", None)
@@ -182,6 +184,8 @@ def credit_counts(result: Any) -> tuple[int, int] | None:
                 return None
             graded = int((np.abs(expected.ravel()) > SCAFFOLD_TOLERANCE).sum())
         wrong = len(result.wrong) + len(result.extra)
+        if kind in ("set", "ik_solutions"):  # a wrong element in a missing one's place
+            wrong = len(result.wrong) + max(0, len(result.extra) - len(result.wrong))
     else:
         return None
     return (min(wrong, graded), graded) if graded else None

@@ -32,6 +32,7 @@ from ..teaching import (
     MATRIX_DIAGNOSES,
     PROFILE_DIAGNOSES,
 )
+from ..teaching.exercises import EXERCISE_SLIPS
 from ._points import credit_counts
 
 __all__ = [
@@ -80,10 +81,18 @@ WORDS_BY_KIND: dict[str, dict[str, str]] = {
     "profile": {**DIAGNOSES, **PROFILE_DIAGNOSES},
     **{kind: DIAGNOSES for kind in ("value", "vector", "angle", "set", "interval")},
 }
-#: Every diagnosis code of the checkers with what it means (the rubric's words).
+#: Every diagnosis code of the checkers with what it means (the rubric's words), and the
+#: course exercises' own slips (the largest move sets the time, q3 = A before the drop, …).
 SLIP_WORDS: dict[str, str] = {
     code: words
-    for table in (DH_DIAGNOSES, PROFILE_DIAGNOSES, IK_DIAGNOSES, MATRIX_DIAGNOSES, DIAGNOSES)
+    for table in (
+        EXERCISE_SLIPS,
+        DH_DIAGNOSES,
+        PROFILE_DIAGNOSES,
+        IK_DIAGNOSES,
+        MATRIX_DIAGNOSES,
+        DIAGNOSES,
+    )
     for code, words in table.items()
 }
 

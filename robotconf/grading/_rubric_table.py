@@ -3,8 +3,10 @@
 For every exercise: its points and the share a named slip earns (from the weighting
 table, ``course/kit/weights.md``), the kind of answer its check judges, whether its
 right numbers count, and every slip the checker names for that kind of answer with the
-share it earns. Read from the notebooks' cells alone (the check's ``assert_*`` call),
-without running them.
+share it earns. Read from the notebooks' cells (the check's ``assert_*`` call), without
+running them; an exercise with per-student numbers (``task.assert_answer(k, …)``) is
+read from its registered exercise, whose typical slips are run through its check with
+the demo student's numbers and listed first.
 """
 
 from __future__ import annotations
@@ -19,6 +21,7 @@ from ..teaching import (
     MATRIX_DIAGNOSES,
     PROFILE_DIAGNOSES,
 )
+from ..teaching.exercises import Assignment, registered
 from ._course import find_course, select_lessons, solutions_notebook
 from ._notebook_cells import cell_source, find_exercises, read_notebook
 from ._points import POINTS_PER_EXERCISE, POINTS_PER_MATRIX
@@ -71,8 +74,47 @@ def check_kinds(source: str) -> list[str]:
     return kinds
 
 
-def _slip_list(rubric: Rubric, kind: str) -> str:
-    codes = [code for code in _CODES[kind] if names_a_slip(code)]
+def _assignment_exercise(source: str) -> int | None:
+    """``k`` of a check cell's ``task.assert_answer(k, answer_k)``, if it has one."""
+    try:
+        tree = ast.parse(source)
+    except SyntaxError:
+        return None
+    for node in ast.walk(tree):
+        if (
+            isinstance(node, ast.Call)
+            and getattr(node.func, "attr", None) == "assert_answer"
+            and node.args
+            and isinstance(node.args[0], ast.Constant)
+            and isinstance(node.args[0].value, int)
+        ):
+            return node.args[0].value
+    return None
+
+
+def _typical(lesson: str, number: int) -> tuple[str, list[str]]:
+    """The kind of answer of a course exercise with drawn numbers, and the codes its
+    typical slips get from its check (with the demo student's numbers)."""
+    task = Assignment(lesson, "demo")
+    kind = str(getattr(task.check(number, task.answer(number)), "kind", "?"))
+    codes: list[str] = []
+    for answer in task.exercise(number).slips(task.numbers).values():
+        typed = answer.tolist() if hasattr(answer, "tolist") else answer
+        code = task.check(number, typed).diagnosis
+        if names_a_slip(code) and code not in codes:
+            codes.append(code)
+    return kind, codes
+
+
+def _slip_list(rubric: Rubric, kind: str, typical: list[str] | None = None) -> str:
+    codes = [code for code in _CODES.get(kind, {}) if names_a_slip(code)]
+    if typical:
+        others = [code for code in codes if code not in typical]
+        return f"its typical slips {_shown(rubric, typical)}; any other: {_shown(rubric, others)}"
+    return _shown(rubric, codes)
+
+
+def _shown(rubric: Rubric, codes: list[str]) -> str:
     shown = []
     for code in codes:
         share = rubric.share_of(code)
@@ -107,6 +149,8 @@ def rubric_text(lesson: str, course: str | os.PathLike[str] | None = None) -> st
     # Rubric of 11_inverse_kinematics: 9 points
     >>> "| 2 | 1.5 | ik_solutions | 0.75 |" in text
     True
+    >>> "`atan_quadrant`" in text.split("**Exercise 1**")[1].split("any other")[0]
+    True
     """
     folder = find_course(course)
     name = select_lessons(folder, [lesson])[0]
@@ -115,9 +159,16 @@ def rubric_text(lesson: str, course: str | os.PathLike[str] | None = None) -> st
     rows = []
     total = 0.0
     details = []
+    drawn = {e.number for e in registered(name)}
     for exercise in find_exercises(notebook, f"{name} solutions"):
-        kinds = check_kinds(cell_source(notebook["cells"][exercise.check_index]))
+        check = cell_source(notebook["cells"][exercise.check_index])
+        kinds = check_kinds(check)
         kind = kinds[-1] if kinds else "?"
+        number = _assignment_exercise(check)
+        typical: list[str] | None = None
+        if number in drawn:
+            kind, typical = _typical(name, number)
+            kinds = [kind]
         points = weights.points_of(name, exercise.number) if weights else None
         if points is None:
             points = float(POINTS_PER_MATRIX if kind == "matrix" else POINTS_PER_EXERCISE)
@@ -130,8 +181,9 @@ def rubric_text(lesson: str, course: str | os.PathLike[str] | None = None) -> st
             f"| {exercise.number} | {points:g} | {kind} | {slip:g} | {numbers} |"
             + (" several checks: a named slip only |" if several else " |")
         )
-        if kind in _CODES:
-            details.append(f"- **Exercise {exercise.number}**: {_slip_list(rubric, kind)}")
+        if kind in _CODES or typical:
+            listed = _slip_list(rubric, kind, typical)
+            details.append(f"- **Exercise {exercise.number}**: {listed}")
     source = weights.source if weights else f"no {WEIGHTS_FILE}: the default points"
     head = [
         f"# Rubric of {name}: {total:g} points",

@@ -21,7 +21,7 @@ from ..diagnosis._components import Setting, close
 from ..reading._numeric_judge import agrees
 from ..reading._tolerance import ABS_TOL, REL_TOL
 from ._exercise import Exercise, checkers
-from ._mistake_models import component_slips, matrix_at, matrix_slips
+from ._mistake_models import component_slips, configuration_hints, matrix_at, matrix_slips
 
 __all__ = [
     "EXERCISE_SLIPS",
@@ -80,9 +80,10 @@ def name_slip(result: Any, numbers: Numbers, named: Named | None, equal: Any) ->
         values = np.asarray(student.tolist() if hasattr(student, "tolist") else student, float)
     except (TypeError, ValueError):
         return result
-    for code, (answer, hint) in named(numbers).items():
+    for key, (answer, hint) in named(numbers).items():
         if not equal(values, answer):
             continue
+        code = key.partition("[")[0]  # "joint_left_out[q2]": one joint's slip
         if hasattr(result, "diagnoses"):  # a MatrixCheck
             return dataclasses.replace(
                 result, hints=[hint], mistakes=[code], diagnoses=(code,), complete=True
@@ -153,7 +154,13 @@ def matrix_exercise(
             result = checkers().check_matrix(given, matrix_at(robot(numbers), step, at))
         else:
             result = checkers().check_matrix(given, reference(robot(numbers), step, at))
-        return name_slip(result, numbers, named, equal)
+        result = name_slip(result, numbers, named, equal)
+        return name_slip(result, numbers, configurations, equal)
+
+    def configurations(numbers: Numbers) -> dict[str, tuple[Any, str]]:
+        arm, at = robot(numbers), q(numbers)
+        found = configuration_hints(arm, at, free)
+        return {k: (matrix_at(arm, step, v), hint) for k, (v, hint) in found.items()}
 
     def fast(given: Any, numbers: Numbers) -> bool:
         return equal(np.asarray(given, dtype=float), matrix_at(robot(numbers), step, q(numbers)))

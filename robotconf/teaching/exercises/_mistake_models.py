@@ -31,6 +31,7 @@ from ..diagnosis._mistakes import context_candidates, generic_candidates
 
 __all__ = [
     "component_slips",
+    "configuration_hints",
     "configuration_slips",
     "dh_table_slips",
     "matrix_at",
@@ -191,6 +192,8 @@ def _slips_at(
     for candidate in candidates:
         values = np.asarray(candidate.values, dtype=float)[0]
         if step == "p_EE":
+            if candidate.code == "row_swap" and "and 4" in candidate.reading:
+                continue  # the point's homogeneous 1 is no row of a typed [x, y, z]
             values = values.reshape(-1)[:3]
         found.setdefault(candidate.code, values)
         if not np.allclose(values, found[candidate.code]):
@@ -259,4 +262,72 @@ def dh_table_slips(rows: Any) -> dict[str, list[tuple[Any, ...]]]:
                 found[f"{code}[{r + 1}]"] = [
                     new if k == r else parsed[k] for k in range(len(parsed))
                 ]
+    return found
+
+
+def _show(values: Any) -> str:
+    return "(" + ", ".join(f"{float(v):.4g}" for v in np.asarray(values).reshape(-1)) + ")"
+
+
+def configuration_hints(
+    robot: Robot, q: Sequence[float], free: Sequence[int] | None = None
+) -> dict[str, tuple[np.ndarray, str]]:
+    """The configuration slips at ``q`` with the hint that names each, by slip name.
+
+    The keys are :func:`configuration_slips`' (``"joint_left_out[q2]"``); the code before
+    the bracket is the matrix checker's (a joint turned the wrong way is
+    ``rotation_direction``). A matrix exercise names these when the checker's own
+    candidates do not explain the answer (a bare Jacobian has none of them).
+
+    >>> import robotconf as rc
+    >>> hints = configuration_hints(rc.preset("paper"), [0.5, 0.2, -0.4])
+    >>> hints["joint_left_out[q2]"][1][:44]
+    'Your numbers are what you get with q2 = 0: j'
+    """
+    names = robot.coordinate_names
+    at = np.asarray(q, dtype=float)
+    found: dict[str, tuple[np.ndarray, str]] = {}
+    for key, values in configuration_slips(robot, q, free).items():
+        code, _, inside = key.partition("[")
+        joints = inside.rstrip("]").split(",") if inside else []
+        if code == "parking_pose":
+            hint = (
+                "Your numbers are those of the parking pose q = 0 (every joint at 0), but "
+                f"this exercise asks for q = {_show(at)}: put the joint values in."
+            )
+        elif code == "joint_left_out":
+            j = names.index(joints[0])
+            hint = (
+                f"Your numbers are what you get with {joints[0]} = 0: joint {j + 1} was left "
+                f"out — here it stands at {joints[0]} = {at[j]:.4g}."
+            )
+        elif code == "sign_error":
+            code = "rotation_direction"
+            hint = (
+                f"Your numbers are what you get with −{joints[0]}: joint "
+                f"{names.index(joints[0]) + 1} turned the wrong way — a positive "
+                f"{joints[0]} turns it counterclockwise about its axis."
+            )
+        elif code == "swapped_joints":
+            hint = (
+                f"{joints[0]} and {joints[1]} are exchanged: your numbers are what you get "
+                "with the two joint values swapped."
+            )
+        elif code == "absolute_angle":
+            hint = (
+                f"{joints[0]} is used as an absolute angle: the joint turns relative to the "
+                "link before it (their axes are parallel), so the angles add up along the "
+                "chain."
+            )
+        elif code == "degrees_as_radians":
+            hint = (
+                "Your numbers are what you get with angles in degrees fed to sin and cos as "
+                "if they were radians: convert first, radians = degrees × π/180."
+            )
+        else:  # radians_as_degrees
+            hint = (
+                "Your numbers are what you get with a calculator in degree mode: the angles "
+                "here are in radians, so switch it to radian mode."
+            )
+        found[key] = (values, hint)
     return found
