@@ -72,6 +72,7 @@ from .teaching import (
     Derivation,
     DerivationStep,
     DHTableCheck,
+    Exam,
     ExpectedMatrix,
     IKCheck,
     MatrixCheck,
@@ -169,6 +170,7 @@ __all__ = [
     "DHTableCheck",
     "Variant",
     "Assignment",
+    "Exam",
     # inverse kinematics
     "ik",
     "ik_all",

@@ -156,9 +156,9 @@ they run when your notebook is graded, and the feedback shows what they said.
 - **Rounding:** numbers with 3 significant digits are accepted (unless an exercise says
   otherwise); fewer digits lose points.
 - **Credit for the method:** a wrong answer with one recognised slip of a right method
-  (a sign, atan for atan2, a unit, a forgotten synchronization, …) earns half the
-  points; an answer of several numbers earns the share of its numbers that are right,
-  at most three quarters.
+  (a sign, atan for atan2, a unit, a forgotten synchronization, …) earns a share of the
+  points, usually half; an answer of several numbers earns the share of its numbers
+  that are right, at most three quarters. A blank answer earns nothing.
 - **Your own work:** an answer cell that calls robotconf (`rc.…`, or a method of a
   robot, program or result) is not graded automatically: it earns no points until your
   teacher has looked at it. Derive the answer yourself; numpy as a calculator is fine.

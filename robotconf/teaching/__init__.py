@@ -30,7 +30,8 @@ DH tables (judged by the robot they describe: joint axes and end-effector at see
     :func:`parse_dh_rows`
 Per-student exercise parameters (the same id gives the same numbers on every machine)
     :class:`Variant`; the course's exercises with them, screened so that every typical
-    slip gives a refused answer: :class:`Assignment` (:mod:`.exercises`),
+    slip gives a refused answer: :class:`Assignment` (:mod:`.exercises`); quizzes and
+    exams drawn per student from them: :class:`Exam`;
     :data:`EXERCISE_SLIPS`
 Student text (a whitelist parser: nothing is evaluated)
     :func:`parse_expression`, :func:`parse_matrix`, :class:`ParserLimits`
@@ -88,7 +89,7 @@ from .derivation import (
     symbolic_fits,
 )
 from .diagnosis import ROTATION_PATTERN, Candidate, generic_candidates, is_rotation_like
-from .exercises import EXERCISE_SLIPS, Assignment
+from .exercises import EXERCISE_SLIPS, Assignment, Exam
 from .ik_answers import (
     IK_DIAGNOSES,
     IKCheck,
@@ -171,6 +172,7 @@ __all__ = [
     # per-student variants, and the course's exercises with them
     "Variant",
     "Assignment",
+    "Exam",
     "EXERCISE_SLIPS",
     # student text
     "parse_expression",

@@ -9,7 +9,8 @@ exercise's own slips ("the largest move sets the time") beside the checker's.
 
 In a notebook
     :class:`Assignment` (``task = rc.Assignment(lesson, student_id)``; ``task["d1"]``,
-    ``task.assert_answer(1, answer_1)``, ``task.shows(1)``)
+    ``task.assert_answer(1, answer_1)``, ``task.shows(1)``); :class:`Exam` (quizzes and
+    exams: one exercise per slot drawn per student, with its numbers)
 The registry
     :class:`Exercise`, :func:`registered`, :data:`EXERCISE_SLIPS`
 Mistake models
@@ -21,6 +22,7 @@ Mistake models
 """
 
 from . import _lesson_09, _lesson_10, _lesson_11, _lesson_12, _lessons_02_08
+from ._exam import Exam
 from ._exercise import Assignment, Exercise, registered
 from ._kinds import EXERCISE_SLIPS
 from ._mistake_models import component_slips, configuration_slips, dh_table_slips, matrix_slips
@@ -29,6 +31,7 @@ del _lesson_09, _lesson_10, _lesson_11, _lesson_12, _lessons_02_08  # registered
 
 __all__ = [
     "Assignment",
+    "Exam",
     "Exercise",
     "registered",
     "EXERCISE_SLIPS",

@@ -172,6 +172,9 @@ class Assignment:
         The lesson folder, e.g. ``"12_trajectories"``.
     student_id : str
         The student's id, as :class:`~robotconf.teaching.Variant` takes it.
+    draw : str, optional
+        Draw the numbers under this name too (``"quiz"``, ``"exam-2026"``): the same
+        exercises and checks, other numbers than the lesson's homework.
 
     Attributes
     ----------
@@ -195,9 +198,11 @@ class Assignment:
     'accel_time_factor'
     >>> task.variant.drawn == Assignment("12_trajectories", " DEMO ").variant.drawn
     True
+    >>> Assignment("12_trajectories", "demo", draw="quiz")["d1"] == task["d1"]  # other numbers
+    False
     """
 
-    def __init__(self, lesson: str, student_id: str) -> None:
+    def __init__(self, lesson: str, student_id: str, draw: str | None = None) -> None:
         exercises = registered(lesson)
         if not exercises:
             raise InvalidInputError(
@@ -207,6 +212,7 @@ class Assignment:
                 problem="no exercises with per-student numbers in",
             )
         self.lesson = lesson
+        self._key = lesson if draw is None else f"{lesson}@{draw}"
         self._exercises = {e.number: e for e in exercises}
         # A round draws every exercise, screening each in turn; an exercise that cannot
         # reveal its slips with the numbers drawn before it (it draws none of its own, or
@@ -220,7 +226,7 @@ class Assignment:
                     raise
 
     def _draw(self, student_id: str, exercises: list[Exercise], round_: int) -> None:
-        self.variant = Variant(student_id, self.lesson)
+        self.variant = Variant(student_id, self._key)
         self.numbers: dict[str, Any] = {}
         for exercise in exercises:
             self.numbers.update(_screen(self.variant, exercise, dict(self.numbers), round_))
