@@ -19,7 +19,7 @@ from robotconf import InvalidInputError
 from robotconf.cli import main
 from robotconf.grading import SLIP_WORDS, read_weights
 from robotconf.grading._quiz import read_exam_bank, read_quizzes
-from robotconf.grading._rubric import UNEXPLAINED
+from robotconf.grading.rubric._rubric import UNEXPLAINED
 
 from .course_support import COURSE, exercise_cells, lesson_dirs, read_notebook
 

@@ -13,7 +13,7 @@ import re
 
 import pytest
 
-from robotconf.grading._shortcuts import robotconf_calls
+from robotconf.grading import robotconf_calls
 from robotconf.teaching.exercises import registered
 from robotconf.teaching.reading._tolerance import ROUNDING_RULE
 

@@ -2,9 +2,10 @@
 
 ``Credit`` is what a released autograder cell runs; nbgrader grades the cell by its last
 output (the score), or 0 when it raises or writes to standard error. The expected
-scores below are counted by hand from the rubric (``robotconf/grading/_rubric.py``): a
-wrong answer earns the larger of a named slip's share (half by default) and the share
-of its numbers that count and are right (at most 3/4).
+scores below are counted by hand from the rubric
+(``robotconf/grading/rubric/_rubric.py``): a wrong answer earns the larger of a named
+slip's share (half by default) and the share of its numbers that count and are right
+(at most 3/4).
 """
 
 from __future__ import annotations

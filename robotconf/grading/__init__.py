@@ -35,14 +35,25 @@ The command line
 
 from ._answer_key import AnswerKey, KeyExercise, KeyLesson, answer_key, write_answer_key
 from ._command import add_course_parser, run_course
-from ._credit import Credit
 from ._execute import ExerciseRun, SolutionsRun, run_solutions
 from ._notebook_cells import Exercise, find_exercises, read_notebook
-from ._points import credit_counts, graded_entries, points_for
 from ._release import Release, ReleasedExercise, release_course, source_notebook
-from ._rubric import SLIP_WORDS, Award, Rubric, award, names_a_slip
-from ._shortcuts import FLAG, robotconf_calls
-from ._weights import Weights, find_weights, read_weights
+from .rubric import (
+    FLAG,
+    SLIP_WORDS,
+    Award,
+    Credit,
+    Rubric,
+    Weights,
+    award,
+    credit_counts,
+    find_weights,
+    graded_entries,
+    names_a_slip,
+    points_for,
+    read_weights,
+    robotconf_calls,
+)
 
 __all__ = [
     # in a graded notebook

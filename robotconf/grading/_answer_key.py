@@ -19,8 +19,8 @@ from typing import Any
 from .._errors import InvalidInputError
 from ._course import find_course, select_lessons, solutions_notebook
 from ._execute import CELL_TIMEOUT, check_student_id, run_solutions
-from ._points import points_for
-from ._weights import find_weights
+from .rubric._points import points_for
+from .rubric._weights import find_weights
 
 __all__ = ["AnswerKey", "KeyExercise", "KeyLesson", "answer_key", "key_path", "write_answer_key"]
 

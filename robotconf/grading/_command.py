@@ -130,7 +130,7 @@ def run_course(args: argparse.Namespace, say: Callable[[str], None] = print) -> 
     """
     from ._answer_key import answer_key, key_path, write_answer_key
     from ._release import release_course
-    from ._rubric_table import rubric_text
+    from .rubric._rubric_table import rubric_text
 
     if args.course_command == "rubric":
         say(rubric_text(args.lesson, args.course).rstrip("\n"))

@@ -17,7 +17,7 @@ import textwrap
 from typing import Any
 
 from .._errors import InvalidInputError
-from ._rubric import DEFAULT_CAP, DEFAULT_SHARE, Rubric
+from .rubric._rubric import DEFAULT_CAP, DEFAULT_SHARE, Rubric
 
 __all__ = [
     "BEGIN_HIDDEN",

@@ -11,9 +11,9 @@ import json
 from collections.abc import Mapping
 from pathlib import Path
 
-from ._credit import HIDDEN_SAMPLES
 from ._nbgrader_cells import CODE_STUB
-from ._points import POINTS_PER_EXERCISE, POINTS_PER_MATRIX
+from .rubric._credit import HIDDEN_SAMPLES
+from .rubric._points import POINTS_PER_EXERCISE, POINTS_PER_MATRIX
 
 __all__ = ["WRITTEN_BY", "config_text", "readme_text", "write_if_ours"]
 

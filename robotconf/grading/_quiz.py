@@ -33,7 +33,7 @@ from ..teaching.exercises import registered
 from ..teaching.reading._tolerance import ROUNDING_RULE
 from ._course import exercises_notebook, find_course, lesson_names
 from ._notebook_cells import cell_source, find_exercises, read_notebook
-from ._weights import _tables
+from .rubric._weights import _tables
 
 __all__ = [
     "EXAM_BANK_FILE",
@@ -234,7 +234,7 @@ def _weights(out: Path, rows: list[tuple[str, int, float]]) -> None:
 
 
 def _points(course: Path, lesson: str, number: int) -> float:
-    from ._weights import find_weights
+    from .rubric._weights import find_weights
 
     weights = find_weights(course)
     found = weights.points_of(lesson, number) if weights else None

@@ -40,9 +40,9 @@ from ._notebook_cells import (
     read_notebook,
     student_id_cell,
 )
-from ._points import points_for
-from ._rubric import Rubric
-from ._weights import Weights, find_weights
+from .rubric._points import points_for
+from .rubric._rubric import Rubric
+from .rubric._weights import Weights, find_weights
 
 __all__ = ["Release", "ReleasedExercise", "release_course", "source_notebook"]
 

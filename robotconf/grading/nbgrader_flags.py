@@ -2,7 +2,7 @@
 
 nbgrader scores an autograder test cell by its output alone and never asks for a
 person. A released test cell that finds robotconf's own answer in the answer cell
-(:mod:`robotconf.grading._shortcuts`) prints :data:`~robotconf.grading._shortcuts.FLAG`
+(:mod:`robotconf.grading.rubric._shortcuts`) prints :data:`~robotconf.grading.FLAG`
 and earns 0; this step, run by ``nbgrader autograde`` right after it saves the scores,
 marks every such cell "needs manual grading" in the gradebook, so the formgrader lists
 it for the teacher. ``nbgrader_config.py`` from ``robotconf course release`` adds it to
@@ -19,7 +19,7 @@ from typing import Any
 from nbgrader.api import Gradebook
 from nbgrader.preprocessors import NbGraderPreprocessor
 
-from ._shortcuts import FLAG
+from .rubric import FLAG
 
 __all__ = ["FlagForManualGrading", "flagged_cells"]
 

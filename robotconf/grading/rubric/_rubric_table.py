@@ -14,16 +14,16 @@ from __future__ import annotations
 import ast
 import os
 
-from ..teaching import (
+from ...teaching import (
     DH_DIAGNOSES,
     DIAGNOSES,
     IK_DIAGNOSES,
     MATRIX_DIAGNOSES,
     PROFILE_DIAGNOSES,
 )
-from ..teaching.exercises import Assignment, registered
-from ._course import find_course, select_lessons, solutions_notebook
-from ._notebook_cells import cell_source, find_exercises, read_notebook
+from ...teaching.exercises import Assignment, registered
+from .._course import find_course, select_lessons, solutions_notebook
+from .._notebook_cells import cell_source, find_exercises, read_notebook
 from ._points import POINTS_PER_EXERCISE, POINTS_PER_MATRIX
 from ._rubric import Rubric, names_a_slip
 from ._weights import WEIGHTS_FILE, find_weights

@@ -21,7 +21,7 @@ from dataclasses import dataclass, field
 from types import ModuleType, TracebackType
 from typing import Any
 
-from .. import teaching
+from ... import teaching
 
 __all__ = ["CHECKERS", "CheckCall", "CheckRecorder"]
 

@@ -22,7 +22,7 @@ import re
 from dataclasses import dataclass, field
 from pathlib import Path
 
-from .._errors import InvalidInputError
+from ..._errors import InvalidInputError
 from ._rubric import DEFAULT_SHARE, Rubric, names_a_slip
 
 __all__ = ["WEIGHTS_FILE", "Weights", "find_weights", "read_weights"]

@@ -24,15 +24,15 @@ from collections.abc import Mapping
 from dataclasses import dataclass, field
 from typing import Any
 
-from .._errors import InvalidInputError
-from ..teaching import (
+from ..._errors import InvalidInputError
+from ...teaching import (
     DH_DIAGNOSES,
     DIAGNOSES,
     IK_DIAGNOSES,
     MATRIX_DIAGNOSES,
     PROFILE_DIAGNOSES,
 )
-from ..teaching.exercises import EXERCISE_SLIPS
+from ...teaching.exercises import EXERCISE_SLIPS
 from ._points import credit_counts
 
 __all__ = [
