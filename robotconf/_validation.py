@@ -76,6 +76,24 @@ class _Shown(str):
         return str(self)
 
 
+class _ArrayShown:
+    """A small array as an error message shows it, printed only when a message is made
+    (numpy's printing costs far more than the checks it is passed to)."""
+
+    __slots__ = ("_array",)
+
+    def __init__(self, array: np.ndarray) -> None:
+        self._array = array
+
+    def __repr__(self) -> str:
+        try:
+            return repr(self._array).replace("\n", " ")
+        except ValueError:  # an object array holding an integer too long to print
+            return f"array of shape {self._array.shape} and dtype {self._array.dtype}"
+
+    __str__ = __repr__
+
+
 def one_line(value: Any) -> Any:
     """``value`` as an error message may show it: arrays on a single line, huge ints described.
 
@@ -91,10 +109,7 @@ def one_line(value: Any) -> Any:
     """
     if isinstance(value, np.ndarray):
         if value.ndim <= 1 and value.size <= 8:
-            try:
-                return _Shown(repr(value).replace("\n", " "))
-            except ValueError:  # an object array holding an integer too long to print
-                pass
+            return _ArrayShown(value)
         return _Shown(f"array of shape {value.shape} and dtype {value.dtype}")
     if isinstance(value, int) and not isinstance(value, bool) and abs(value) >= _INTEGER_LIMIT:
         return _Shown(f"<an integer of about {int(value.bit_length() * 0.30103) + 1} digits>")

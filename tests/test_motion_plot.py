@@ -24,8 +24,9 @@ def paper_robot() -> rc.Robot:
 
 
 def _text(fig) -> str:  # type: ignore[no-untyped-def]
-    """Free text of the figure (the annotation), without the title."""
-    return " ".join(t.get_text() for t in fig.texts if t is not fig._suptitle)
+    """Free text of the figure (the annotation), without the title, its line breaks
+    (made to fit the figure's width) read as spaces."""
+    return " ".join(" ".join(t.get_text().split()) for t in fig.texts if t is not fig._suptitle)
 
 
 def test_layout_labels_and_data() -> None:

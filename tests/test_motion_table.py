@@ -13,6 +13,7 @@ from robotconf.motion import (
     EXCEL_MAX_ROWS,
     QUANTITIES,
     STATS,
+    TIE,
     compare_motions,
     motion_stats,
     simulate,
@@ -77,7 +78,9 @@ def test_stats_equal_numpy(motion) -> None:  # type: ignore[no-untyped-def]
         x = motion.table[column].to_numpy()
         row = stats.loc[column]
         assert row["max"] == np.max(x) and row["min"] == np.min(x)
-        assert row["t_max"] == motion.t[np.argmax(x)] and row["t_min"] == motion.t[np.argmin(x)]
+        tie = TIE * max(abs(np.max(x)), abs(np.min(x)))  # the first of equal peaks
+        assert row["t_max"] == motion.t[np.flatnonzero(x >= np.max(x) - tie)[0]]
+        assert row["t_min"] == motion.t[np.flatnonzero(x <= np.min(x) + tie)[0]]
         assert row["peak_to_peak"] == np.max(x) - np.min(x)
         assert row["mean"] == pytest.approx(np.mean(x), rel=1e-12, abs=1e-12)
         assert row["median"] == np.median(x)
@@ -87,6 +90,18 @@ def test_stats_equal_numpy(motion) -> None:  # type: ignore[no-untyped-def]
     assert z["max"] == pytest.approx(20.0) and z["min"] == pytest.approx(-20.0, abs=1e-5)
     assert z["t_min"] == pytest.approx(np.pi / 2, abs=1e-3)
     assert motion_stats(motion).equals(stats)
+
+
+def test_a_periodic_motions_extremes_are_timed_in_its_first_period() -> None:
+    # A 1 Hz sine on q1: every quantity repeats each second, but in floats a later period's
+    # peak can be larger by an ulp (velocity x's minimum was reported at t = 2.118 s).
+    motion = simulate(paper_robot(), {"q1": Sine(frequency=1.0)}, t_end=10.0, dt=1e-3)
+    stats = motion.stats()
+    assert stats["t_max"].max() < 1.0 and stats["t_min"].max() < 1.0
+    # |v| of the EE peaks where q1 swings fastest; vx = −70·sin(q1)·q1' (r = 70, z = 20).
+    vx = stats.loc[("EE", "velocity", "x")]
+    assert vx["t_min"] == pytest.approx(0.118) and vx["t_max"] == pytest.approx(0.382)
+    assert vx["max"] == pytest.approx(-vx["min"], rel=1e-12)
 
 
 def test_compare_analytic_with_numeric() -> None:

@@ -12,10 +12,11 @@ import ipywidgets as widgets
 import pytest
 
 import robotconf as rc
-from robotconf.panel._app_mode import VOILA_VARIABLES, app_mode
-from robotconf.panel._monospace import MONOSPACE_STYLE
+from robotconf.panel import actions as act
+from robotconf.panel.support import VOILA_VARIABLES, app_mode
+from robotconf.panel.support._monospace import MONOSPACE_STYLE
 
-from .test_panel_support import make_panel
+from .test_panel_support import make_panel, ui
 
 APP_NOTEBOOK = Path(__file__).parents[1] / "app" / "configurator.ipynb"
 #: What a hint to type code looks like: a cell, or a call on the panel object.
@@ -23,9 +24,15 @@ CODE_HINT = re.compile(r"\bcells?\b|panel\.|rc\.", re.IGNORECASE)
 
 
 def _html(widget: widgets.Widget) -> Iterator[str]:
-    """The HTML of every HTML widget under ``widget``, shown or not."""
+    """The text of every HTML widget and form under ``widget``, shown or not."""
     if isinstance(widget, widgets.HTML | widgets.HTMLMath):
         yield widget.value
+    spec = getattr(widget, "spec", None)
+    if isinstance(spec, dict):
+        for row in spec.get("rows", ()):
+            for line in row.get("lines", ()):
+                for control in line:
+                    yield from (str(control.get(k, "")) for k in ("value", "label", "title"))
     for child in getattr(widget, "children", ()):
         yield from _html(child)
 
@@ -54,10 +61,12 @@ def in_voila(monkeypatch: pytest.MonkeyPatch, no_voila: None) -> None:
 
 def _run_long_motion(panel) -> None:  # type: ignore[no-untyped-def]
     # More samples than the on-screen table shows: the note says where all of them are.
-    panel.motion_section.t_end.value = 10.0
-    panel.motion_section.dt.value = 0.01
-    panel.motion_section.run_button.click()
+    ui(panel, "t_end").type("10")
+    ui(panel, "dt").type("0.01")
+    ui(panel, "run").click()
     assert panel.motion is not None
+    for tab in ("matrices", "files", "program", "motion"):  # each tab draws when shown
+        panel.apply(act.SelectTab(tab))
 
 
 def test_notebook_panel_keeps_its_hints(no_voila: None) -> None:
@@ -75,23 +84,28 @@ def test_voila_kernel_is_detected_and_hints_dropped(in_voila: None) -> None:
     assert panel.app is True
     assert _hints(panel) == []
     # What replaces them still reads as sentences.
-    assert "the CSV holds all" in panel.motion_section.results.table_note.value
-    assert "Symbolic matrices are offered for shorter chains only" in (
-        panel.matrices.symbolic_note.value
-    )
+    assert "the CSV holds all" in panel.motion_tab.results.table_note.value
+    panel.apply(act.SelectTab("matrices"))
+    texts = " ".join(_html(panel.matrices.widget))
+    assert "Symbolic matrices are offered for shorter chains only" in texts
+    panel.apply(act.SelectTab("files"))
     texts = " ".join(_html(panel.files.widget))
-    assert "<b>Save</b> the robot, its signals and time settings as JSON:" in texts
+    assert "Save the robot, its signals, time settings and program as JSON:" in texts
     assert "<b>Load</b> a robotconf JSON file:" in texts
 
 
 def test_explicit_choice_wins_over_detection(in_voila: None) -> None:
     assert make_panel(app=False).app is False
-    assert "panel.save(path)" in " ".join(_hints(make_panel(app=False)))
+    panel = make_panel(app=False)
+    panel.apply(act.SelectTab("files"))
+    assert "panel.save(path)" in " ".join(_hints(panel))
 
 
 def test_app_mode_without_voila(no_voila: None) -> None:
     panel = make_panel(app=True)
     assert panel.app is True
+    for tab in ("matrices", "files", "program", "motion"):
+        panel.apply(act.SelectTab(tab))
     assert _hints(panel) == []
 
 
@@ -104,18 +118,17 @@ def test_app_must_be_a_bool_or_none() -> None:
 
 def test_matrices_and_wizard_summary_are_fixed_width(no_voila: None) -> None:
     panel = make_panel()
-    panel.results.selected_index = 1  # the Matrices tab draws when it is shown
-    assert f'<pre style="{MONOSPACE_STYLE}">' in panel.matrices.numeric_text.value
-    assert "robotconf-matrices" in panel.matrices.numeric_text._dom_classes
+    panel.apply(act.SelectTab("matrices"))  # the Matrices tab draws when it is shown
+    assert f'<pre style="{MONOSPACE_STYLE}">' in panel.matrices.output.value
+    assert "robotconf-matrices" in panel.matrices.output._dom_classes
     # The printout itself is unchanged: the core's text, escaped.
-    assert str(rc.derivation(panel.robot)).splitlines()[0] in panel.matrices.numeric_text.value
-    panel.mode.value = "wizard"
-    wizard = panel.wizard
+    assert str(rc.derivation(panel.robot)).splitlines()[0] in panel.matrices.output.value
+    ui(panel, "mode").choose("wizard")
     for _ in range(50):  # every question keeps its default answer
-        if wizard.step_name == "summary":
+        if panel.state.wizard.part == "summary":
             break
-        wizard.next_button.click()
-    assert f'<pre style="{MONOSPACE_STYLE}">' in wizard.body.children[0].value
+        ui(panel, "wizard.next").click()
+    assert f'<pre style="{MONOSPACE_STYLE}">' in panel.wizard.preview.value
 
 
 def test_app_notebook_is_for_students() -> None:

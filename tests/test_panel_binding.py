@@ -17,11 +17,11 @@ import pytest
 
 import robotconf as rc
 from robotconf import signals
-from robotconf.panel import Configurator, _binding
-from robotconf.panel._binding import FileBinding, flush_all
+from robotconf.panel import Configurator
+from robotconf.panel.files import FileBinding, _binding, flush_all
 
 from .test_panel_hostile import hostile_file
-from .test_panel_support import FakeScene, make_panel
+from .test_panel_support import FakeScene, make_panel, shown, ui
 
 IMG = "<img src=x onerror=alert(1)>"
 
@@ -32,14 +32,13 @@ def bound(path: Path, **options) -> Configurator:  # type: ignore[no-untyped-def
 
 def edit(panel: Configurator) -> None:
     """Change the robot (a q, an offset), a signal and every time setting."""
-    panel.modules.rows[1].q.box.value = -30.0
-    panel.modules.rows[2].offsets[0].box.value = 35.0
-    editor = panel.motion_section.editors[0]
-    editor.kind.value = "Sine"
-    editor.parameters["amplitude"].value = 30.0  # degrees, the panel's angle unit
-    panel.motion_section.t_end.value = 3.0
-    panel.motion_section.dt.value = 0.05
-    panel.motion_section.method.value = "numeric"
+    ui(panel, "modules[1].q").type("-30")
+    ui(panel, "modules[2].ax").type("35")
+    ui(panel, "signals.q1").choose("Sine")
+    ui(panel, "signals.q1.amplitude").type("30")  # degrees, the panel's angle unit
+    ui(panel, "t_end").type("3")
+    ui(panel, "dt").type("0.05")
+    ui(panel, "method").choose("numeric")
 
 
 def tags(markup: str) -> list[str]:
@@ -78,9 +77,9 @@ def test_every_valid_change_is_saved_and_a_new_panel_gets_it_back(tmp_path):
 
     again = bound(path)  # a kernel restart: the same cell runs again
     assert again.robot == panel.robot
-    assert again.motion_section.signals() == {"q1": signals.Sine(amplitude=np.deg2rad(30.0))}
-    assert again.motion_section.settings() == {"t_end": 3.0, "dt": 0.05, "method": "numeric"}
-    assert again.modules.rows[1].q.box.value == pytest.approx(-30.0)
+    assert again.state.document == panel.state.document
+    assert shown(again, "modules[1].q")["value"] == pytest.approx(-30.0)
+    assert not again.can_undo  # the loaded file is where undo starts
     assert "Loaded from <code>" in again.binding.widget.value
     assert again.errors == {}
 
@@ -90,7 +89,7 @@ def test_the_file_is_replaced_in_one_step_and_keeps_its_mode(tmp_path):
     bound(path)
     path.chmod(0o640)
     panel = bound(path)
-    panel.modules.rows[0].q.box.value = 10.0
+    ui(panel, "modules[0].q").type("10")
     assert stat.S_IMODE(path.stat().st_mode) == 0o640
     assert sorted(p.name for p in tmp_path.iterdir()) == ["my_robot.json"]  # no temp file left
 
@@ -98,28 +97,38 @@ def test_the_file_is_replaced_in_one_step_and_keeps_its_mode(tmp_path):
 def test_a_refused_value_leaves_the_last_valid_setup_in_the_file(tmp_path):
     path = tmp_path / "my_robot.json"
     panel = bound(path)
-    panel.modules.rows[0].q.box.value = 20.0
+    ui(panel, "modules[0].q").type("20")
     before = path.read_text()
-    panel.modules.rows[0].q.box.value = float("nan")  # the core refuses it
+    ui(panel, "modules[0].q").type("nan")  # refused: the state, and so the file, stay
     assert path.read_text() == before
-    panel.modules.rows[0].q.box.value = 20.0  # valid again, and the same robot
-    assert path.read_text() == before
-    editor = panel.motion_section.editors[0]
-    editor.kind.value = "Sine"  # valid with its defaults: saved
+    ui(panel, "signals.q1").choose("Sine")  # valid with its defaults: saved
     before = path.read_text()
-    default = editor.parameters["frequency"].value
-    editor.parameters["frequency"].value = -1.0  # an invalid signal: nothing is saved
-    assert "not saved while an input is invalid" in panel.binding.widget.value
-    editor.parameters["frequency"].value = default  # back to what the file holds
+    ui(panel, "signals.q1.frequency").type("-1")  # refused beside the box: nothing changes
     assert path.read_text() == before
     assert "Every change is saved" in panel.binding.widget.value
-    editor.parameters["frequency"].value = -1.0
-    panel.modules.rows[1].q.box.value = 5.0  # a valid robot, but the setup is not
-    assert path.read_text() == before
-    editor.parameters["frequency"].value = 2.0  # fixed: everything is saved again
+    ui(panel, "signals.q1.frequency").type("2")
     setup = rc.load_setup(path)
     assert setup.signals == {"q1": signals.Sine(frequency=2.0)}
-    assert setup.robot.q[1] == pytest.approx(np.deg2rad(5.0))
+
+
+def test_a_program_the_robot_no_longer_fits_is_not_written_until_fixed(tmp_path):
+    path = tmp_path / "my_robot.json"
+    panel = bound(path)
+    panel.apply(rc.panel.actions.AddMove())
+    saved = path.read_text()
+    panel.apply(rc.panel.actions.EditMove(0, "kind", "LIN"))  # to where it is already
+    assert "the LIN goes nowhere" in panel.errors["program.moves[0]"]
+    assert panel.program is None and panel.state.document.program.moves[0].kind == "LIN"
+    assert path.read_text() == saved  # the draft is kept on screen, not written
+    program = rc.Program(panel.robot, [rc.LIN(position=(50, 10, 30), speed=10)])
+    panel.apply(rc.panel.actions.LoadSetup(panel.robot, {}, None, program))
+    assert rc.load_setup(path).program == program
+    before = path.read_text()
+    ui(panel, "modules[2].ax").type("1")  # too short now: (50, 10, 30) is out of reach
+    assert "Changes not saved: program.moves[0]" in panel.binding.widget.value
+    assert path.read_text() == before
+    ui(panel, "modules[2].ax").type("30")  # fixed: saved again
+    assert rc.load_setup(path).robot == panel.robot
 
 
 def test_an_uploaded_file_is_saved_once_whole(tmp_path, monkeypatch):
@@ -144,9 +153,9 @@ def hostile_file_path(folder: Path) -> Path:
 def test_saving_to_the_bound_file_is_not_a_foreign_change(tmp_path):
     path = tmp_path / "my_robot.json"
     panel = bound(path)
-    panel.modules.rows[0].q.box.value = 15.0
+    ui(panel, "modules[0].q").type("15")
     panel.save(path)
-    panel.modules.rows[0].q.box.value = 25.0
+    ui(panel, "modules[0].q").type("25")
     assert rc.load_setup(path).robot.q[0] == pytest.approx(np.deg2rad(25.0))
     assert panel.errors == {}
 
@@ -184,7 +193,7 @@ def test_a_folder_is_not_a_file(tmp_path):
     path.mkdir()
     panel = bound(path)
     assert "was not loaded" in panel.errors["file"]
-    panel.modules.rows[0].q.box.value = 5.0
+    ui(panel, "modules[0].q").type("5")
     assert path.is_dir()
 
 
@@ -193,10 +202,10 @@ def test_a_file_changed_by_someone_else_is_not_overwritten(tmp_path):
     panel = bound(path)
     theirs = rc.preset("paper").with_q([0.1, 0.2, 0.3]).to_json()
     path.write_text(theirs)  # another panel, or an editor
-    panel.modules.rows[0].q.box.value = 40.0
+    ui(panel, "modules[0].q").type("40")
     assert path.read_text() == theirs
     assert "changed on disk" in panel.errors["file"]
-    panel.modules.rows[0].q.box.value = 50.0
+    ui(panel, "modules[0].q").type("50")
     assert path.read_text() == theirs
 
 
@@ -206,14 +215,14 @@ def test_a_deleted_file_is_written_again_and_a_write_failure_is_shown(tmp_path):
     path = folder / "my_robot.json"
     panel = bound(path)
     path.unlink()
-    panel.modules.rows[0].q.box.value = 10.0
+    ui(panel, "modules[0].q").type("10")
     assert rc.load_setup(path).robot.q[0] == pytest.approx(np.deg2rad(10.0))
     path.unlink()
     folder.rmdir()
-    panel.modules.rows[0].q.box.value = 20.0
+    ui(panel, "modules[0].q").type("20")
     assert panel.errors["file"].startswith("file: cannot save to ")
     folder.mkdir()
-    panel.modules.rows[0].q.box.value = 30.0
+    ui(panel, "modules[0].q").type("30")
     assert rc.load_setup(path).robot.q[0] == pytest.approx(np.deg2rad(30.0))
     assert "file" not in panel.errors
 

@@ -29,8 +29,10 @@ import pytest
 
 import robotconf as rc
 from robotconf import signals
+from robotconf.panel import actions as act
+from robotconf.panel.form import Form, link, row
 
-from .test_panel_support import make_panel
+from .test_panel_support import make_panel, shown, ui
 
 IMG = "<img src=x onerror=alert(1)>"
 SCRIPT = "<script>alert(2)</script>"
@@ -123,7 +125,12 @@ def strings(root: widgets.Widget) -> Iterator[tuple[str, str, str]]:
         where = f"{type(widget).__name__}"
         state = widget.get_state()
         for trait, value in state.items():
-            if trait.startswith("_") and trait not in ("_options_labels", "_titles"):
+            if trait == "_spec_json":  # a form's spec, sent as JSON text
+                value = json.loads(value)
+            elif trait.startswith("_") and trait not in ("_options_labels", "_titles"):
+                continue
+            if isinstance(value, dict):  # a form's spec: the page writes it as text
+                yield from _spec_strings(value, f"{where}.{trait}")
                 continue
             values = value if isinstance(value, (list, tuple)) else [value]
             for text in values:
@@ -137,6 +144,22 @@ def strings(root: widgets.Widget) -> Iterator[tuple[str, str, str]]:
                     yield "html", f"{where}.outputs", data["text/html"]
                 if "text/plain" in data:
                     yield "text", f"{where}.outputs", data["text/plain"]
+
+
+def _spec_strings(value: Any, where: str) -> Iterator[tuple[str, str, str]]:
+    """Strings of a form's spec: text (the page sets ``textContent``), except the ``src``
+    of a picture and the ``href`` of a download, which must be data the kernel made."""
+    if isinstance(value, dict):
+        for key, item in value.items():
+            if key in ("src", "href"):
+                assert isinstance(item, str) and item.startswith("data:"), (where, item)
+                continue
+            yield from _spec_strings(item, f"{where}.{key}")
+    elif isinstance(value, (list, tuple)):
+        for item in value:
+            yield from _spec_strings(item, where)
+    elif isinstance(value, str):
+        yield "text", where, value
 
 
 def _treatment(widget: widgets.Widget, trait: str) -> str:
@@ -196,12 +219,12 @@ def panel() -> Any:
 
 
 def test_the_hostile_file_loads_and_nothing_in_it_becomes_markup(panel):
-    panel.results.selected_index = 1  # the Matrices tab, drawn when shown
+    panel.apply(act.SelectTab("matrices"))  # drawn when shown
     seen = check_page(panel)
     assert f"loaded {FILE_NAME}" in seen  # the user still sees the file's name, as text
     assert ROBOT_NAME in seen  # in the matrices' text printout
     assert repr(DH_NAME) in seen  # the read-only DH row of the module list
-    assert panel.motion_section.signals() == {
+    assert panel.state.document.motion.driven(panel.robot.coordinate_names) == {
         "q1": signals.Sine(amplitude=0.5),
         "q4": signals.Ramp(),
     }
@@ -210,64 +233,63 @@ def test_the_hostile_file_loads_and_nothing_in_it_becomes_markup(panel):
 def test_every_view_of_the_hostile_robot_stays_text(panel):
     # Matrices: text, LaTeX, symbolic with and without lengths (a moved joint keeps the
     # robot's name, so the printouts hold it).
-    panel.modules.rows[0].q.box.value = 20.0
-    panel.results.selected_index = 1
-    panel.matrices.style.value = "latex"
-    panel.matrices.symbolic.value = True
-    assert "\\$" in panel.matrices.numeric_math.value  # the name's "$" as the core escaped it
-    assert "\\$" in panel.matrices.symbolic_math.value
-    panel.matrices.lengths.value = True
-    assert r"\sin" in panel.matrices.symbolic_math.value
+    ui(panel, "modules[0].q").type("20")
+    panel.apply(act.SelectTab("matrices"))
+    ui(panel, "matrices.style").choose("latex")
+    assert "\\$" in panel.matrices.math.value  # the name's "$" as the core escaped it
+    ui(panel, "matrices.symbolic").check(True)
+    assert "\\$" in panel.matrices.math.value
+    ui(panel, "matrices.lengths").check(True)
+    assert r"\sin" in panel.matrices.math.value
     check_page(panel)
-
     # Motion: run, every point, the table, statistics, plot and CSV.
-    panel.results.selected_index = 0
-    panel.motion_section.run_button.click()
+    panel.apply(act.SelectTab("motion"))
+    ui(panel, "run").click()
     assert panel.motion is not None and panel.errors == {}
-    results = panel.motion_section.results
-    assert set(MODULE_NAMES) <= set(results.point.options)  # dropdown labels: text
-    for point in results.point.options:
-        results.point.value = point
-    results.tabs.selected_index = 2
-    results.csv_button.click()
-    assert results.csv_link.value
+    points = [value for _, value in shown(panel, "results.point")["options"]]
+    assert set(MODULE_NAMES) <= set(points)  # options: text
+    for point in points:
+        ui(panel, "results.point").choose(point)
+    ui(panel, "results.view").choose("plot")
+    ui(panel, "results.view").choose("table")
+    ui(panel, "results.csv").click()
+    assert panel.motion_tab.results.csv_link.value
     seen = check_page(panel)
     for name in MODULE_NAMES:
         assert name in seen  # the table's column headers show them, escaped
     assert f"{ROBOT_NAME}_motion.csv".replace(" ", "_") in seen  # the CSV's file name
-
     # Module list: a move, a NaN and its message.
-    panel.modules.rows[3].up_button.click()
-    panel.modules.rows[3].offsets[0].box.value = float("nan")
-    assert "modules[3].ax" in panel.errors
+    ui(panel, "modules[3].up").click()
+    ui(panel, "modules[3].ax").type(IMG)
+    assert "modules[3].ax" in panel.errors and IMG in panel.errors["modules[3].ax"]
     check_page(panel)
-    panel.modules.rows[3].offsets[0].box.value = 5.0
-
+    ui(panel, "modules[3].ax").type("5")
     # Save: a hostile file name typed into the box.
-    panel.files.filename.value = FILE_NAME
-    panel.files.save_button.click()
-    assert panel.files.save_link.value
+    panel.apply(act.SelectTab("files"))
+    ui(panel, "save.name").type(FILE_NAME)
+    ui(panel, "save.make").click()
+    assert shown(panel, "save.link")["download"] == FILE_NAME
     assert FILE_NAME in check_page(panel)
-
-    # DH table (converted, or the core's message naming a module; then a new table) and
-    # back, undone to the hostile robot; the wizard to its summary.
+    # DH table (the core's message naming a module; then a new table) and back, undone
+    # to the hostile robot; the wizard to its summary.
     hostile = panel.robot
-    panel.mode.value = "dh"
-    panel.dh_entry.prompt.buttons["convert"].click()
+    ui(panel, "mode").choose("dh")
+    ui(panel, "mode.dh.convert").click()
     check_page(panel)
-    panel.dh_entry.prompt.buttons["new"].click()
-    panel.dh.rows[0].cells["alpha"].box.value = 90.0
-    panel.mode.value = "modules"
+    ui(panel, "mode.dh.new").click()
+    ui(panel, "dh[0].alpha").type("90")
+    ui(panel, "mode").choose("modules")
     for _ in range(5):
         if panel.robot == hostile:
             break
         panel.undo()
     assert panel.robot == hostile
     check_page(panel)
-    panel.mode.value = "wizard"
+    ui(panel, "mode").choose("wizard")
     for _ in range(12):
-        panel.wizard.next_button.click()
-    assert panel.wizard.step_name == "summary"
+        ui(panel, "wizard.next").click()
+        if panel.state.wizard.part == "summary":
+            break
     check_page(panel)
 
 
@@ -275,19 +297,17 @@ def test_error_messages_quote_hostile_values_as_text(panel):
     data = json.loads(hostile_file())
     data["robot"]["links"][0]["kind"] = IMG  # the core quotes the bad value in its message
     upload(panel, json.dumps(data).encode(), name=f"{SCRIPT}.json")
-    assert IMG in panel.errors["load"]
+    assert IMG in panel.files.upload_error.message
     seen = check_page(panel)
     assert IMG in seen  # the message shows the value as the user wrote it
     assert panel.robot.name == ROBOT_NAME  # the last valid robot stays
-
     data = json.loads(hostile_file())
     data["signals"] = {SVG: {"type": "Sine"}}  # no module of that name
     upload(panel, json.dumps(data).encode())
-    assert SVG in panel.errors["load"]
+    assert SVG in panel.files.upload_error.message
     check_page(panel)
-
     upload(panel, b"{" + IMG.encode(), name=IMG)
-    assert "load" in panel.errors
+    assert panel.files.upload_error.message
     check_page(panel)
 
 
@@ -314,3 +334,7 @@ def test_the_walker_sees_what_it_must_refuse():
     label = widgets.Label(MODULE_NAMES[2])
     with pytest.raises(AssertionError):
         check_page(type("Panel", (), {"widget": widgets.HBox([label])})())
+    form = Form()
+    form.show([row("r", [link("javascript:alert(1)", "x", "x")])])
+    with pytest.raises(AssertionError):
+        check_page(type("Panel", (), {"widget": widgets.HBox([form])})())

@@ -1,40 +1,59 @@
-"""The Motion tab: signal editors, repeating table, time settings, Run and its results."""
+"""The Motion tab: a signal per coordinate, the repeating table, time settings, Run and
+its results; an animation plays to its end and a scrub is the student's only."""
 
 from __future__ import annotations
+
+import base64
 
 import numpy as np
 import pytest
 
 import robotconf as rc
 from robotconf import signals
+from robotconf.panel import actions as act
 
-from .test_panel_support import make_panel, paper_robot
+from .test_panel_support import make_panel, paper_robot, shown, ui
 
 
-def test_one_signal_editor_per_coordinate_with_units():
+def _signals(panel):
+    return panel.state.document.motion.signals
+
+
+def _status(panel) -> str:
+    return shown(panel, "run")["label"] and next(
+        c["value"]
+        for r in panel.motion_tab.form.spec["rows"]
+        for line in r["lines"]
+        for c in line
+        if c.get("class") == "robotconf-run-status"
+    )
+
+
+def test_one_signal_per_coordinate_with_its_unit():
     panel = make_panel()
-    editors = panel.motion_section.editors
-    assert [e.name for e in editors] == ["q1", "q2", "q3"]
-    assert "[deg]" in editors[0].label.value  # the panel's angle unit
-    panel.modules.rows[2].kind.value = "Tz"
-    assert "[units]" in panel.motion_section.editors[2].label.value  # its length unit
+    kinds = [k for k in panel.motion_tab.form.control_keys() if k.count(".") == 1]
+    assert kinds == ["signals.q1", "signals.q2", "signals.q3"]
+    titles = [r["lines"][0][0]["value"] for r in panel.motion_tab.form.spec["rows"][1:4]]
+    assert titles == ["q1 [deg]", "q2 [deg]", "q3 [deg]"]  # the panel's angle unit
+    ui(panel, "modules[2].kind").choose("Tz")
+    assert panel.motion_tab.form.spec["rows"][3]["lines"][0][0]["value"] == "q3 [units]"
 
 
 def test_signal_parameters_come_from_the_core_classes():
-    editor = make_panel().motion_section.editors[0]
-    editor.kind.value = "Sine"
-    assert list(editor.parameters) == ["amplitude", "bias", "frequency", "phase"]
-    editor.kind.value = "Trapezoidal"
-    assert "accel_fraction" in editor.parameters
-    editor.parameters["duration"].value = 3.0
-    assert editor.build() == (True, signals.Trapezoidal(duration=3.0))
+    panel = make_panel()
+    ui(panel, "signals.q1").choose("Sine")
+    keys = [k for k in panel.motion_tab.form.control_keys() if k.startswith("signals.q1.")]
+    assert keys == [f"signals.q1.{p}" for p in ("amplitude", "bias", "frequency", "phase")]
+    ui(panel, "signals.q1").choose("Trapezoidal")
+    assert "signals.q1.accel_fraction" in panel.motion_tab.form.control_keys()
+    ui(panel, "signals.q1.duration").type("3")
+    assert _signals(panel)[0] == signals.Trapezoidal(duration=3.0)
 
 
-def test_run_produces_the_table_with_the_papers_numbers():
+def test_run_gives_the_papers_numbers():
     panel = make_panel(dt=0.01, t_end=2.0)
-    editor = panel.motion_section.editors[2]
-    editor.kind.value = "RepeatingSequence"  # Simulink's default sawtooth on q3
-    panel.motion_section.run_button.click()
+    ui(panel, "signals.q3").choose("RepeatingSequence")  # Simulink's default sawtooth on q3
+    ui(panel, "run").click()
     motion = panel.motion
     assert motion is not None and panel.errors == {}
     table = motion.table
@@ -45,123 +64,132 @@ def test_run_produces_the_table_with_the_papers_numbers():
     np.testing.assert_allclose(motion.velocity[0, -1], [0, 0, -40], atol=1e-12)
     expected = rc.simulate(paper_robot(), {"q3": signals.RepeatingSequence()}, 2.0, 0.01)
     np.testing.assert_array_equal(motion.columns(), expected.columns())
-    results = panel.motion_section.results
+    results = panel.motion_tab.results
     assert "<table" in results.table.value and "70" in results.table.value
+    ui(panel, "results.view").choose("statistics")
     assert "rms" in results.stats.value
+    assert _status(panel) == "201 samples, analytic"
 
 
-def test_point_choice_filters_table_and_plots_on_demand():
+def test_the_point_choice_filters_the_table_and_plots_on_demand():
     panel = make_panel(t_end=1.0, dt=0.1)
-    panel.motion_section.editors[0].kind.value = "Ramp"
-    panel.motion_section.run_button.click()
-    results = panel.motion_section.results
-    assert results.point.options[0] == "EE"
-    results.point.value = "M2"
+    ui(panel, "signals.q1").choose("Ramp")
+    ui(panel, "run").click()
+    results = panel.motion_tab.results
+    assert shown(panel, "results.point")["options"][0] == ["EE", "EE"]
+    ui(panel, "results.point").choose("M2")
     assert "M2" in results.table.value and "EE" not in results.table.value
-    assert results.plot.value == b""  # drawn only when its tab shows
-    results.tabs.selected_index = 2
+    assert results.plot.value == b""  # drawn only when its view shows
+    ui(panel, "results.view").choose("plot")
     assert results.plot.value[:4] == b"\x89PNG"
 
 
-def test_csv_download_link_is_a_data_uri_of_the_whole_table():
-    import base64
-
+def test_the_csv_download_link_is_a_data_uri_of_the_whole_table():
     panel = make_panel(t_end=1.0, dt=0.5)
-    panel.motion_section.run_button.click()
-    link = panel.motion_section.results.make_csv_link()
+    ui(panel, "run").click()
+    link = panel.motion_tab.results.make_csv_link()
     href = link.split('href="')[1].split('"')[0]
     assert href.startswith("data:text/csv;base64,")
-    text = base64.b64decode(href.split(",", 1)[1]).decode()
-    assert text == panel.motion.table.to_csv()
+    assert base64.b64decode(href.split(",", 1)[1]).decode() == panel.motion.table.to_csv()
 
 
-def test_dt_zero_is_shown_next_to_dt_and_keeps_robot_and_motion():
+def test_dt_zero_is_refused_beside_dt_and_keeps_everything():
     panel = make_panel(t_end=1.0, dt=0.5)
-    panel.motion_section.run_button.click()
+    ui(panel, "run").click()
     motion, robot = panel.motion, panel.robot
-    panel.motion_section.dt.value = 0.0
-    panel.motion_section.run_button.click()
-    assert panel.motion is motion and panel.robot == robot
-    assert set(panel.errors) == {"dt"}
-    assert panel.errors["dt"].startswith("dt: must be positive, got 0.0")
-    assert "must be positive" in panel.motion_section.setting_errors["dt"].widget.value
-    assert panel.motion_section.t_end.value == 1.0  # nothing else lost
-    panel.motion_section.dt.value = 0.25
-    panel.motion_section.run_button.click()
-    assert panel.errors == {} and panel.motion is not motion
+    ui(panel, "dt").type("0")
+    assert set(panel.errors) == {"dt"} and panel.errors["dt"].startswith("dt: must be positive")
+    assert shown(panel, "dt")["text"] == "0"  # what was typed stays, with the message
+    assert panel.state.document.motion.settings.dt == 0.5
+    ui(panel, "run").click()  # runs with the last valid settings
+    assert panel.motion is not motion and panel.motion.t.size == 3 and panel.robot == robot
+    ui(panel, "dt").type("0.25")
+    assert panel.errors == {} and panel.state.document.motion.settings.dt == 0.25
 
 
-def test_t_end_before_t0_is_shown_next_to_t_end():
+def test_t_end_before_t0_is_refused_beside_t_end():
     panel = make_panel()
-    panel.motion_section.t_end.value = -1.0
-    panel.motion_section.run_button.click()
-    assert set(panel.errors) == {"t_end"} and panel.motion is None
+    ui(panel, "t_end").type("-1")
+    assert set(panel.errors) == {"t_end"} and panel.state.document.motion.settings.t_end == 10.0
 
 
-def test_numeric_method():
+def test_the_numeric_method():
     panel = make_panel(t_end=1.0, dt=0.01)
-    panel.motion_section.editors[0].kind.value = "Sine"
-    panel.motion_section.method.value = "numeric"
-    panel.motion_section.run_button.click()
+    ui(panel, "signals.q1").choose("Sine")
+    ui(panel, "method").choose("numeric")
+    ui(panel, "run").click()
     assert panel.motion.method == "numeric"
 
 
-def test_repeating_table_is_editable_and_validated():
+def test_the_repeating_table_is_editable_and_checked():
     panel = make_panel(t_end=4.0, dt=0.5)
-    editor = panel.motion_section.editors[1]
-    editor.kind.value = "RepeatingSequence"
-    table = editor.table
-    assert table.preview.value[:4] == b"\x89PNG"
-    table.add_button.click()
-    assert [b.value for b in table.times] == [0.0, 2.0, 4.0]
-    table.values[2].value = 0.0  # a triangle 0 → 2 → 0
-    panel.motion_section.run_button.click()
+    ui(panel, "signals.q2").choose("RepeatingSequence")
+    images = [
+        c
+        for r in panel.motion_tab.form.spec["rows"]
+        for line in r["lines"]
+        for c in line
+        if c["type"] == "image"
+    ]
+    assert images and images[0]["src"].startswith("data:image/png;base64,iVBOR")  # the preview
+    ui(panel, "signals.q2.table.add").click()
+    assert _signals(panel)[1].times == (0.0, 2.0, 4.0)
+    ui(panel, "signals.q2.table.v2").type("0")  # a triangle 0 → 2 → 0 (values in degrees)
+    ui(panel, "run").click()
     assert panel.motion.signals["q2"] == signals.RepeatingSequence((0, 2, 4), (0, 2, 0))
-    motion = panel.motion
-    table.times[2].value = 1.0  # not increasing
-    key = "signals.q2.table"
-    assert panel.errors[key].startswith("times: times must strictly increase")
-    panel.motion_section.run_button.click()
-    assert panel.motion is motion
-    table.times[2].value = 4.0
-    assert key not in panel.errors
-    table.remove_button.click()
-    assert editor.build() == (True, signals.RepeatingSequence())
+    ui(panel, "signals.q2.table.t2").type("1")  # not increasing
+    assert panel.errors["signals.q2.table.t2"].startswith("times:")
+    assert _signals(panel)[1].times == (0.0, 2.0, 4.0)
 
 
-def test_invalid_signal_parameter_is_shown_next_to_it():
+def test_an_invalid_signal_parameter_is_refused_beside_it():
     panel = make_panel()
-    editor = panel.motion_section.editors[0]
-    editor.kind.value = "Sine"
-    editor.parameters["frequency"].value = -1.0
+    ui(panel, "signals.q1").choose("Sine")
+    ui(panel, "signals.q1.frequency").type("-1")
     assert set(panel.errors) == {"signals.q1.frequency"}
     assert panel.errors["signals.q1.frequency"].startswith("frequency: must be ≥ 0")
-    panel.motion_section.run_button.click()
-    assert panel.motion is None
+    assert _signals(panel)[0] == signals.Sine()
 
 
 def test_signals_move_with_their_module_when_reordered():
     panel = make_panel()
-    panel.motion_section.editors[2].kind.value = "Ramp"
-    panel.modules.rows[2].up_button.click()
-    assert panel.motion_section.editors[1].kind.value == "Ramp"
-    assert panel.motion_section.editors[1].name == "q2"
-    assert panel.motion_section.editors[2].kind.value == "hold"
+    ui(panel, "signals.q3").choose("Ramp")
+    ui(panel, "modules[2].up").click()
+    assert _signals(panel) == (None, signals.Ramp(), None)
+    assert shown(panel, "signals.q2")["value"] == "Ramp"
 
 
-def test_animation_goes_to_the_scene_and_a_changed_robot_is_noted():
+def test_an_animation_plays_to_its_end_and_only_a_scrub_seeks():
     panel = make_panel(t_end=1.0, dt=0.5)
-    panel.motion_section.run_button.click()
-    panel.motion_section.results.animate_button.click()
+    ui(panel, "run").click()
+    ui(panel, "results.animate").click()
     assert panel.scene.calls[-1] == ("animate", panel.motion)
-    panel.modules.rows[0].q.box.value = 10.0
-    assert "robot changed" in panel.motion_section.status.value
+    assert panel.state.playback.playing and panel.state.playback.source == "motion"
+    scene = panel.scene
+    calls = len(scene.calls)
+    scene.page_reports(playing=True, time=0.5)  # the page reports where it is
+    assert panel.state.playback.playing and panel.state.playback.time == 0.5
+    assert len(scene.calls) == calls  # a report is mirrored, never answered with a command
+    scene.page_reports(playing=False, time=1.0)  # the end: the page stopped by itself
+    assert not panel.state.playback.playing and panel.state.playback.time == 1.0
+    assert len(scene.calls) == calls
+    panel.apply(act.Play())
+    assert scene.calls[-1] == ("play", None)
+
+
+def test_a_changed_robot_ends_the_animation_and_is_noted():
+    panel = make_panel(t_end=1.0, dt=0.5)
+    ui(panel, "run").click()
+    ui(panel, "results.animate").click()
+    ui(panel, "modules[0].q").type("10")
+    assert panel.state.playback.source is None  # the robot moved: the pane shows it
+    assert "robot changed" in _status(panel)
     assert panel.motion.robot == paper_robot()
 
 
 @pytest.mark.parametrize("kind", ["Constant", "Step", "Ramp", "Sine", "Cubic", "Quintic"])
 def test_every_signal_type_runs(kind):
     panel = make_panel(t_end=1.0, dt=0.25)
-    panel.motion_section.editors[0].kind.value = kind
-    panel.motion_section.run_button.click()
+    ui(panel, "signals.q1").choose(kind)
+    ui(panel, "run").click()
     assert type(panel.motion.signals["q1"]).__name__ == kind

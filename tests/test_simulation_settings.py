@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import dataclasses
 import json
+import re
 
 import numpy as np
 import pytest
@@ -218,27 +219,39 @@ def test_cli_combines_command_line_file_and_defaults(tmp_path, capsys):
     )
 
 
-def test_panel_refuses_over_limit_settings_on_run_and_on_save():
+def test_panel_refuses_over_limit_settings_and_keeps_the_last_valid_ones(tmp_path):
+    pytest.importorskip("ipywidgets")
+    from .test_panel_support import make_panel, note, ui
+
+    panel = make_panel(t_end=2.0, dt=0.5)
+    ui(panel, "t_end").type("1e5")  # 2·10⁵ samples at 0.5 s: fine
+    ui(panel, "dt").type("0.001")  # 10⁸ + 1 samples: refused beside dt
+    assert note(panel, "dt").startswith(OVER_MESSAGE)
+    assert panel.state.document.motion.settings == SimulationSettings(1e5, dt=0.5)
+    ui(panel, "run").click()  # runs with the last valid settings, not the refused ones
+    assert panel.motion is not None and panel.motion.t.size == 200_001
+    panel.save(tmp_path / "robot.json")
+    assert rc.load_setup(tmp_path / "robot.json").simulation["dt"] == 0.5
+
+
+def test_panel_made_with_over_limit_settings_says_which_field():
     pytest.importorskip("ipywidgets")
     from .test_panel_support import make_panel
 
-    panel = make_panel(**OVER)
-    panel.motion_section.run_button.click()
-    assert panel.motion is None
-    assert panel.errors["dt"].startswith(OVER_MESSAGE)
-    assert panel.files.make_save_link() == ""
-    assert panel.errors["save"].startswith("simulation." + OVER_MESSAGE)
+    with pytest.raises(InvalidInputError, match=re.escape(OVER_MESSAGE)) as caught:
+        make_panel(**OVER)
+    assert caught.value.field == "dt"
 
 
 def test_panel_keeps_a_files_t0(tmp_path):
     pytest.importorskip("ipywidgets")
-    from .test_panel_support import make_panel
+    from .test_panel_support import make_panel, ui
 
     setup = rc.Setup(rc.preset("paper"), {"q1": Ramp()}, {"t_end": 2.0, "dt": 0.5, "t0": 1.0})
     panel = make_panel()
     panel.load(setup.save(tmp_path / "robot.json"))
-    panel.motion_section.run_button.click()
+    ui(panel, "run").click()
     np.testing.assert_array_equal(panel.motion.t, [1.0, 1.5, 2.0])
-    assert panel.motion_section.simulation_settings() == SimulationSettings(2.0, 0.5, 1.0)
+    assert panel.state.document.motion.settings == SimulationSettings(2.0, 0.5, 1.0)
     panel.save(tmp_path / "again.json")
     assert rc.load_setup(tmp_path / "again.json").simulation["t0"] == 1.0

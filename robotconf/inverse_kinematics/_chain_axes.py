@@ -30,7 +30,16 @@ from ._subproblems import cross, perp, rotate, rotation
 
 _MOVING = ("revolute", "prismatic")
 
-__all__ = ["AxisJoint", "ChainAxes", "chain_axes", "line_gap", "common_point", "misalignment"]
+__all__ = [
+    "AxisJoint",
+    "ChainAxes",
+    "chain_axes",
+    "reference_configuration",
+    "axes_at",
+    "line_gap",
+    "common_point",
+    "misalignment",
+]
 
 
 @dataclass(frozen=True, eq=False)
@@ -134,6 +143,13 @@ def chain_axes(robot: Robot, constant: Any = ()) -> ChainAxes:
     >>> axes.letters, axes.joints[1].point, axes.home[:3, 3]
     ('RR', array([40.,  0.,  0.]), array([70.,  0.,  0.]))
     """
+    moving, reference = reference_configuration(robot, constant)
+    return axes_at(robot, moving, reference)
+
+
+def reference_configuration(robot: Robot, constant: Any = ()) -> tuple[list[int], np.ndarray]:
+    """The moving joints' columns and the reference ``q`` (moving joints at 0, held ones
+    at their own values), as :func:`chain_axes` reads them."""
     if not isinstance(robot, Robot):
         raise InvalidInputError(
             "robot", type(robot).__name__, "a robotconf Robot", problem="not a robot:"
@@ -148,6 +164,11 @@ def chain_axes(robot: Robot, constant: Any = ()) -> ChainAxes:
     kinds = robot.joint_types[: robot.active]
     moving = [i for i, kind in enumerate(kinds) if kind in _MOVING and i not in held]
     reference[moving] = 0.0
+    return moving, reference
+
+
+def axes_at(robot: Robot, moving: list[int], reference: np.ndarray) -> ChainAxes:
+    """:func:`chain_axes` once the moving joints and the reference are known."""
     lines = joint_axes(robot, reference)
     joints = tuple(
         AxisJoint(i, str(lines.joints[i]), lines.point[i].copy(), lines.direction[i].copy())

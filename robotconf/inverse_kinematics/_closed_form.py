@@ -16,16 +16,26 @@ import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import as_float_array, check_finite_number, one_line
-from ._chain_axes import ChainAxes, chain_axes
+from ._chain_axes import ChainAxes
 from ._elbow import solve_elbow
 from ._planar import solve_planar
-from ._recognize import GAP_TOL, NotClosedForm, classify, refuse
+from ._recognize import GAP_TOL, NotClosedForm, closed_form_structure, refuse
 from ._solutions import Candidates, IKSolutions
 from ._spherical_wrist import solve_spherical_wrist
 from ._subproblems import perp, rotation
 from ._ur import solve_ur
 
-__all__ = ["ik_all", "VERIFY_TOL"]
+__all__ = [
+    "ik_all",
+    "VERIFY_TOL",
+    "SAME_TOL",
+    "wrap_angles",
+    "within_limits",
+    "orientation_error",
+    "failed_reason",
+    "other_turn_note",
+    "joint_kinds",
+]
 
 #: A solution's end-effector must match the target within this fraction of the robot's
 #: size (and its orientation within this many radians).
@@ -120,20 +130,41 @@ def _read_target(
     return point, turn
 
 
-def _wrap(values: np.ndarray) -> np.ndarray:
+def wrap_angles(values: np.ndarray) -> np.ndarray:
+    """Angles wrapped to (−π, π].
+
+    >>> wrap_angles(np.array([np.pi, -np.pi, 4.0])).round(6)
+    array([ 3.141593,  3.141593, -2.283185])
+    """
     return np.pi - np.mod(np.pi - values, 2 * np.pi)
 
 
-def _within(q: np.ndarray, limits: np.ndarray, revolute: np.ndarray, solved: np.ndarray) -> bool:
+def within_limits(
+    q: np.ndarray, limits: np.ndarray, revolute: np.ndarray, solved: np.ndarray
+) -> np.ndarray:
+    """Whether each row of ``q`` (k, n) lies within ``limits`` (n, 2), a revolute angle
+    counting as within when it or a whole turn away from it is; only ``solved`` columns
+    count. Returns (k,) bool."""
     lo, hi = limits[:, 0], limits[:, 1]
     eps = 1e-12 * (1.0 + np.abs(limits).max(axis=1))
     turns = np.where(revolute, np.ceil((lo - eps - q) / (2 * np.pi)), 0.0)
     shifted = q + 2 * np.pi * turns
     ok = (shifted >= lo - eps) & (shifted <= hi + eps)
-    return bool(np.all(ok | ~solved))
+    return np.all(ok | ~solved, axis=-1)
 
 
-def _orientation_error(a: np.ndarray, b: np.ndarray) -> np.ndarray:
+def joint_kinds(chain: ChainAxes) -> tuple[np.ndarray, np.ndarray]:
+    """Which of the robot's n coordinates are revolute joints of the chain, and which are
+    solved (moving) at all: two (n,) bool arrays."""
+    revolute = np.zeros(chain.robot.n, dtype=bool)
+    solved = np.zeros(chain.robot.n, dtype=bool)
+    for joint in chain.joints:
+        solved[joint.column] = True
+        revolute[joint.column] = joint.kind == "R"
+    return revolute, solved
+
+
+def orientation_error(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """The angle between rotations, from ``‖A − B‖_F = 2√2 sin(θ/2)``, shape (k,)."""
     gap = np.linalg.norm(a - b, axis=(-2, -1)) / (2 * math.sqrt(2))
     return 2 * np.arcsin(np.clip(gap, 0.0, 1.0))
@@ -148,16 +179,12 @@ def _finish(
 ) -> IKSolutions:
     robot = chain.robot
     n = robot.n
-    revolute = np.zeros(n, dtype=bool)
-    solved = np.zeros(n, dtype=bool)
-    for joint in chain.joints:
-        solved[joint.column] = True
-        revolute[joint.column] = joint.kind == "R"
+    revolute, solved = joint_kinds(chain)
     rows = np.tile(chain.reference, (len(found.rows), 1))
     for i, (values, _) in enumerate(found.rows):
         for joint, value in zip(chain.joints, values, strict=True):
             rows[i, joint.column] = value
-    rows[:, revolute] = _wrap(rows[:, revolute])
+    rows[:, revolute] = wrap_angles(rows[:, revolute])
     labels = [label for _, label in found.rows]
     size = max(chain.scale, float(np.linalg.norm(point)))
     reason = found.reason
@@ -166,38 +193,44 @@ def _finish(
     if len(rows):
         poses = robot.end_effector_pose(rows)
         near = np.linalg.norm(poses[:, :3, 3] - point, axis=1) <= VERIFY_TOL * size
-        turned = np.zeros(len(rows)) if turn is None else _orientation_error(poses[:, :3, :3], turn)
+        turned = np.zeros(len(rows)) if turn is None else orientation_error(poses[:, :3, :3], turn)
         keep = near & (turned <= VERIFY_TOL)
         other_turn = int(np.count_nonzero(near & ~keep))
         if not keep.any():
-            reason = _failed_reason(family, near, turned, poses, point)
+            reason = failed_reason(family, near, turned, poses, point)
     chosen: list[int] = []
     scale = np.where(revolute, 1.0, size)
     for i in map(int, np.flatnonzero(keep)):
         differ = [
-            np.abs(np.where(revolute, _wrap(rows[i] - rows[j]), rows[i] - rows[j])) / scale
+            np.abs(np.where(revolute, wrap_angles(rows[i] - rows[j]), rows[i] - rows[j])) / scale
             for j in chosen
         ]
         if all(d.max() > SAME_TOL for d in differ):
             chosen.append(i)
     q = rows[chosen] if chosen else np.zeros((0, n))
     limits = robot.joint_limits()
-    within = np.array([_within(row, limits, revolute, solved) for row in q], dtype=bool)
+    within = within_limits(q, limits, revolute, solved)
     if chosen:
         missing = [f"some branches have no solution: {reason}"] if reason else []
         if other_turn:
-            verb = "branches reach" if other_turn > 1 else "branch reaches"
-            missing.append(
-                f"{other_turn} more {verb} the point with another orientation (a {family} arm "
-                "does not set both)"
-            )
+            missing.append(other_turn_note(other_turn, family))
         reason = "; ".join([*found.notes, *missing])
     return IKSolutions(q, tuple(labels[i] for i in chosen), within, family, reason)
 
 
-def _failed_reason(
+def other_turn_note(count: int, family: str) -> str:
+    """The note for ``count`` branches that reach the point with another orientation."""
+    verb = "branches reach" if count > 1 else "branch reaches"
+    return (
+        f"{count} more {verb} the point with another orientation (a {family} arm does not set both)"
+    )
+
+
+def failed_reason(
     family: str, near: np.ndarray, turned: np.ndarray, poses: np.ndarray, point: np.ndarray
 ) -> str:
+    """Why no branch passed the check: ``near`` (k,) which reach the point, ``turned`` (k,)
+    how far their orientations are (rad), ``poses`` (k, 4, 4) where they end."""
     if near.any():
         off = math.degrees(float(turned[near].min()))
         return (
@@ -259,10 +292,8 @@ def ik_all(robot: Any, target: Any, *, angle: Any = None, constant: Any = ()) ->
     >>> ik_all(rc.preset("planar_2r"), [74.2, 0, 0]).reason
     'the target is 4.2 beyond the reach: it is 74.2 from the first axis, and the arm reaches 70'
     """
-    chain = chain_axes(robot, constant)
-    try:
-        family = classify(chain)
-    except NotClosedForm as why:
-        raise refuse(chain, why) from None
+    chain, family, why = closed_form_structure(robot, constant)
+    if family is None:
+        raise refuse(chain, NotClosedForm(why)) from None
     point, turn = _read_target(target, angle, chain, family)
     return _finish(chain, family, point, turn, SOLVERS[family](chain, point, turn, family))

@@ -24,7 +24,14 @@ from ._planar import PlanePlacement, place_in_plane
 from ._solutions import Candidates
 from ._subproblems import cross, perp, turn_to_level, unit
 
-__all__ = ["shoulder_turns", "elbow_turns", "shoulder_label", "elbow_label", "solve_elbow"]
+__all__ = [
+    "shoulder_turns",
+    "elbow_turns",
+    "offset_reason",
+    "shoulder_label",
+    "elbow_label",
+    "solve_elbow",
+]
 
 
 def shoulder_turns(
@@ -59,12 +66,17 @@ def shoulder_turns(
         return [(chain.current(0), True)]
     if roots.kind == "none":
         across = float(np.linalg.norm(perp(column.direction, reach)))
-        out.reason = (
-            f"{what} is {across:.6g} from axis 1, closer than the shoulder offset "
-            f"{abs(offset):.6g} allows"
-        )
+        out.reason = offset_reason(what, across, offset)
         return []
     return [(angle, False) for angle in roots.angles]
+
+
+def offset_reason(what: str, across: float, offset: float) -> str:
+    """Why the column cannot bring a point ``across`` from axis 1 into the arm's plane."""
+    return (
+        f"{what} is {across:.6g} from axis 1, closer than the shoulder offset "
+        f"{abs(offset):.6g} allows"
+    )
 
 
 def elbow_turns(

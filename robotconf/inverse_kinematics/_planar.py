@@ -29,7 +29,19 @@ from ._chain_axes import AxisJoint, ChainAxes
 from ._solutions import Candidates
 from ._subproblems import angle_about, cross, perp, turn_to_level
 
-__all__ = ["PlanePlacement", "place_in_plane", "solve_planar", "any_perpendicular"]
+__all__ = [
+    "ELBOW_WORDS",
+    "PlanePlacement",
+    "place_in_plane",
+    "plane_reason",
+    "tilted_reason",
+    "off_plane_reason",
+    "free_first_note",
+    "free_last_note",
+    "solve_planar",
+    "level_point",
+    "any_perpendicular",
+]
 
 #: The labels of the two elbow branches: the elbow on the clockwise or counterclockwise
 #: side of the line from the first axis to the target, seen with the first axis pointing
@@ -114,16 +126,7 @@ def place_in_plane(
     size = l1 + l2 + r
     roots = turn_to_level(second.direction, v, u, (l1 * l1 + l2 * l2 - r * r) / 2, l1 * l2)
     if roots.kind in ("none", "free"):
-        reach, inner = l1 + l2, abs(l1 - l2)
-        if r > reach:
-            return [], (
-                f"{what} is {r - reach:.6g} beyond the reach: it is {r:.6g} from {from_axis}, "
-                f"and the arm reaches {reach:.6g}"
-            )
-        return [], (
-            f"{what} is {inner - r:.6g} too close: it is {r:.6g} from {from_axis}, and the "
-            f"arm reaches no closer than {inner:.6g}"
-        )
+        return [], plane_reason(what, from_axis, r, l1, l2)
     found = []
     for angle in sorted(roots.angles, key=lambda x: -math.sin(x)):
         moved = second.move(angle, start)
@@ -140,7 +143,53 @@ def place_in_plane(
     return found, ""
 
 
-def _level_point(chain: ChainAxes, last: AxisJoint) -> np.ndarray:
+def plane_reason(what: str, from_axis: str, r: float, l1: float, l2: float) -> str:
+    """Why two links of lengths ``l1``, ``l2`` cannot span the distance ``r``.
+
+    >>> plane_reason("the target", "the first axis", 74.2, 40.0, 30.0)
+    'the target is 4.2 beyond the reach: it is 74.2 from the first axis, and the arm reaches 70'
+    """
+    reach, inner = l1 + l2, abs(l1 - l2)
+    if r > reach:
+        return (
+            f"{what} is {r - reach:.6g} beyond the reach: it is {r:.6g} from {from_axis}, "
+            f"and the arm reaches {reach:.6g}"
+        )
+    return (
+        f"{what} is {inner - r:.6g} too close: it is {r:.6g} from {from_axis}, and the "
+        f"arm reaches no closer than {inner:.6g}"
+    )
+
+
+def tilted_reason(tilt: float) -> str:
+    """Why a planar arm cannot take a target orientation tilted ``tilt`` rad out of plane."""
+    return (
+        f"the target orientation is tilted {math.degrees(tilt):.6g}° out of the "
+        "arm's plane: the arm turns only about its parallel axes"
+    )
+
+
+def off_plane_reason(height: float) -> str:
+    """Why a planar arm cannot reach a target ``height`` off its plane."""
+    return (
+        f"the target is {abs(height):.6g} off the plane the arm moves in (measured along its axes)"
+    )
+
+
+def free_first_note(column: int) -> str:
+    """The note for a target on the first axis (its joint ``q{column + 1}`` is free)."""
+    return f"the target is on the first axis, so q{column + 1} is free: shown at its current value"
+
+
+def free_last_note(column: int) -> str:
+    """The note for a point target when the end-effector lies on the last axis."""
+    return (
+        f"the end-effector lies on the last axis, so a point leaves q{column + 1} "
+        "free: shown at its current value (give angle= or a (4, 4) pose to set it)"
+    )
+
+
+def level_point(chain: ChainAxes, last: AxisJoint) -> np.ndarray:
     """The point of the last revolute axis at the height of the end-effector."""
     p0 = chain.home[:3, 3]
     return last.point + last.direction * float(last.direction @ (p0 - last.point))
@@ -177,17 +226,14 @@ def solve_planar(
     size = max(chain.scale, float(np.linalg.norm(point)))
     start, goal, turn = p0, point, None
     if last is not None:
-        start = _level_point(chain, last)
+        start = level_point(chain, last)
         if rotation is None:
             goal = point + (start - p0)
         else:
             turn = rotation @ r0.T
             tilt = math.atan2(float(np.linalg.norm(cross(w, turn @ w))), float(w @ turn @ w))
             if tilt > 1e-9:
-                out.reason = (
-                    f"the target orientation is tilted {math.degrees(tilt):.6g}° out of the "
-                    "arm's plane: the arm turns only about its parallel axes"
-                )
+                out.reason = tilted_reason(tilt)
                 return out
             goal = point + turn @ (start - p0)
     height = float(w @ (goal - start))
@@ -197,10 +243,7 @@ def solve_planar(
         slide = height / float(w @ direction)
         goal = goal - slide * direction
     elif abs(height) > 1e-9 * size:
-        out.reason = (
-            f"the target is {abs(height):.6g} off the plane the arm moves in (measured along "
-            "its axes)"
-        )
+        out.reason = off_plane_reason(height)
         return out
     what = "the target" if last is None else "the point of the last axis"
     found, out.reason = place_in_plane(
@@ -214,10 +257,7 @@ def solve_planar(
             values[slides[0]] = slide
         label = words.get(placement.shape, f"elbow {placement.shape}")
         if placement.free:
-            out.note(
-                f"the target is on the first axis, so q{first.column + 1} is free: shown at "
-                "its current value"
-            )
+            out.note(free_first_note(first.column))
             label += ", first joint free"
         if last is not None:
             values[revolute[2]] = _last_angle(chain, last, values, turn, out)
@@ -235,10 +275,7 @@ def _last_angle(
     """The third revolute joint: the rest of the turn about the axes (or its own value)."""
     k = chain.joints.index(last)
     if turn is None:
-        out.note(
-            f"the end-effector lies on the last axis, so a point leaves q{last.column + 1} "
-            "free: shown at its current value (give angle= or a (4, 4) pose to set it)"
-        )
+        out.note(free_last_note(last.column))
         return chain.current(k)
     rest = chain.turn(values[:k]).T @ turn
     x = any_perpendicular(last.direction)

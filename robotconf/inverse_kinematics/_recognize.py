@@ -20,16 +20,33 @@ Lines are parallel within 1e-9 rad and meet within 1e-9 of the robot's size.
 
 from __future__ import annotations
 
+import dataclasses
 import math
+from collections import OrderedDict
 from typing import Any
 
 import numpy as np
 
 from .._errors import InvalidInputError
-from ._chain_axes import ChainAxes, chain_axes, common_point, line_gap, misalignment
+from ._chain_axes import (
+    ChainAxes,
+    axes_at,
+    common_point,
+    line_gap,
+    misalignment,
+    reference_configuration,
+)
 from ._subproblems import perp
 
-__all__ = ["FAMILIES", "CLOSED_FORMS", "NotClosedForm", "classify", "recognize", "refuse"]
+__all__ = [
+    "FAMILIES",
+    "CLOSED_FORMS",
+    "NotClosedForm",
+    "classify",
+    "closed_form_structure",
+    "recognize",
+    "refuse",
+]
 
 #: Every family :func:`recognize` can answer, in the order it tries them.
 FAMILIES = ("planar 2R", "planar 3R", "SCARA", "3R elbow", "spherical-wrist 6R", "UR")
@@ -158,6 +175,7 @@ def classify(chain: ChainAxes) -> str:
     """The family of a robot's joint lines; raises :class:`NotClosedForm` saying why not.
 
     >>> import robotconf as rc
+    >>> from robotconf.inverse_kinematics._chain_axes import chain_axes
     >>> classify(chain_axes(rc.preset("scara")))
     'SCARA'
     """
@@ -218,10 +236,73 @@ def recognize(robot: Any, *, constant: Any = ()) -> str | None:
     >>> recognize(rc.preset("paper")), recognize(rc.preset("cartesian"))
     ('3R elbow', None)
     """
+    return closed_form_structure(robot, constant)[1]
+
+
+#: Structures kept (robots are immutable, and an interactive caller asks about a few).
+_KEPT = 32
+_STRUCTURES: OrderedDict[tuple[Any, ...], tuple[Any, ChainAxes, str | None, str]] = OrderedDict()
+
+
+def _frozen(chain: ChainAxes) -> ChainAxes:
+    """Make the kept arrays read-only: every later call shares them."""
+    for array in (
+        chain.home,
+        chain.reference,
+        *(x for j in chain.joints for x in (j.point, j.direction)),
+    ):
+        array.setflags(write=False)
+    return chain
+
+
+def closed_form_structure(robot: Any, constant: Any = ()) -> tuple[ChainAxes, str | None, str]:
+    """A robot's joint lines, its family and why it has none, read once per geometry.
+
+    The joint lines depend on the robot's links, its end-effector point and the values
+    of the held modules only: copies made by :meth:`Robot.with_q` share the links'
+    kernel description (``robot.geometry()``), so they share one entry here, and the
+    answer carries the robot asked about (whose own ``q`` a free joint keeps).
+
+    Returns
+    -------
+    chain : ChainAxes
+    family : str or None
+        As :func:`recognize`.
+    why : str
+        Why there is no closed form (``""`` when there is one), for :func:`refuse`.
+
+    Examples
+    --------
+    >>> import robotconf as rc
+    >>> arm = rc.preset("paper")
+    >>> chain, family, why = closed_form_structure(arm)
+    >>> family, closed_form_structure(arm.with_q([0.1, 0.2, 0.3]))[0].joints is chain.joints
+    ('3R elbow', True)
+    """
+    moving, reference = reference_configuration(robot, constant)
+    geometry = robot.geometry()
+    key = (
+        id(geometry),
+        robot.active,
+        robot.end_effector_point.tobytes(),
+        tuple(moving),
+        reference.tobytes(),
+    )
+    kept = _STRUCTURES.get(key)
+    if kept is not None and kept[0] is geometry:
+        _STRUCTURES.move_to_end(key)
+        chain = kept[1] if kept[1].robot is robot else dataclasses.replace(kept[1], robot=robot)
+        return chain, kept[2], kept[3]
+    chain = _frozen(axes_at(robot, moving, reference))
     try:
-        return classify(chain_axes(robot, constant))
-    except NotClosedForm:
-        return None
+        family, why = classify(chain), ""
+    except NotClosedForm as error:
+        family, why = None, str(error)
+    # The geometry is kept with the entry, so its id cannot be reused while it is here.
+    _STRUCTURES[key] = (geometry, chain, family, why)
+    while len(_STRUCTURES) > _KEPT:
+        _STRUCTURES.popitem(last=False)
+    return chain, family, why
 
 
 def refuse(chain: ChainAxes, why: NotClosedForm) -> InvalidInputError:

@@ -26,7 +26,19 @@ from ._planar import any_perpendicular
 from ._solutions import Candidates
 from ._subproblems import Roots, angle_about, bend_angles, rotate, rotation
 
-__all__ = ["solve_spherical_wrist", "wrist_label", "rest_angle"]
+__all__ = [
+    "solve_spherical_wrist",
+    "wrist_label",
+    "rest_angle",
+    "singular_note",
+    "WRIST_CANNOT_BEND",
+]
+
+#: Why a wrist branch has no solution.
+WRIST_CANNOT_BEND = (
+    "the wrist cannot point axis 6 that way: the angle it must make with axis 4 is outside "
+    "what axis 5 can bend"
+)
 
 
 def wrist_label(roots: Roots, q5: float) -> str:
@@ -101,10 +113,7 @@ def solve_spherical_wrist(
             aim = relative @ w6
             roots = bend_angles(w4, w5, w6, aim)
             if roots.kind == "none":
-                out.reason = out.reason or (
-                    "the wrist cannot point axis 6 that way: the angle it must make with "
-                    "axis 4 is outside what axis 5 can bend"
-                )
+                out.reason = out.reason or WRIST_CANNOT_BEND
                 continue
             for q5 in roots.angles:
                 q4 = angle_about(w4, rotate(w5, q5, w6), aim, 1e-13)

@@ -3,8 +3,9 @@
 This folder is the numpy core. Everything here imports numpy only.
 
 Robots and links
-    :class:`Robot`, :class:`Module`, :class:`DHLink`, :class:`Link`, :func:`transfer_matrix`,
-    :func:`dh_matrix`, :func:`kind_name`, :func:`check_convention`, :func:`characteristic_length`
+    :class:`Robot`, :class:`RobotSnapshot` (``robot.at(q)``: one pass, every frame),
+    :class:`Module`, :class:`DHLink`, :class:`Link`, :func:`transfer_matrix`, :func:`dh_matrix`,
+    :func:`kind_name`, :func:`check_convention`, :func:`characteristic_length`
 Bounds and names (no chain overflows, no two modules share a name)
     :data:`MAX_PARAMETER` (1e150), :data:`MAX_MODULES` (64), :data:`MAX_NAME_CHARS` (200),
     :func:`check_parameter`, :func:`check_name`, :func:`check_module_names`
@@ -83,8 +84,10 @@ from ._link import Link
 from ._module import Module, kind_name, transfer_matrix
 from ._names import MAX_NAME_CHARS, check_module_names, check_name
 from ._points import END_EFFECTOR_LABEL, RobotPoint, format_point, robot_points
+from ._pose_check import POSE_ALLOWED, POSE_TOLERANCE, check_rigid_pose
 from ._robot import Robot, characteristic_length
 from ._rotations import matrix_from_rpy, rotation_matrix, rotation_vector, rpy_from_matrix
+from ._snapshot import RobotSnapshot
 from ._workspace import (
     MAX_WORKSPACE_SAMPLES,
     WORKSPACE_METHODS,
@@ -97,6 +100,7 @@ from ._workspace import (
 __all__ = [
     # robots and links
     "Robot",
+    "RobotSnapshot",
     "Module",
     "DHLink",
     "Link",
@@ -112,6 +116,9 @@ __all__ = [
     "default_limits",
     # bounds and names (docs: robotconf.kinematics._bounds, ._names)
     "MAX_PARAMETER",
+    "POSE_TOLERANCE",
+    "POSE_ALLOWED",
+    "check_rigid_pose",
     "MAX_MODULES",
     "MAX_NAME_CHARS",
     "check_parameter",

@@ -7,39 +7,18 @@ The 3D scene draws its joint markers on these lines; the Jacobian uses the same 
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, NamedTuple
+from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
 from .._validation import check_joint_values
-from ._jacobian import joint_screws, pose_components
+from ._jacobian import JointScrew, joint_screws, pose_components
+from ._named_results import JointAxes
 
 if TYPE_CHECKING:
     from ._robot import Robot
 
-__all__ = ["JointAxes", "joint_axes"]
-
-
-class JointAxes(NamedTuple):
-    """Joint axes of a robot at one configuration or along a trajectory.
-
-    Attributes
-    ----------
-    joints : tuple of str or None, length n
-        The kernel's joint letters (:data:`~robotconf.kinematics.JOINT_LETTERS`): ``"R"``
-        (revolute), ``"P"`` (prismatic); ``None`` for no joint (a ``none`` or ``fixed``
-        module, or a module after the active count). :data:`JOINT_OF_LETTER` turns a letter
-        back into a joint type.
-    point : ndarray, shape (n, 3) or (T, n, 3)
-        A point on each axis (length units): where the joint sits before it moves. NaN
-        for links without a joint.
-    direction : ndarray, shape (n, 3) or (T, n, 3)
-        Unit vector along each axis. NaN for links without a joint.
-    """
-
-    joints: tuple[str | None, ...]
-    point: np.ndarray
-    direction: np.ndarray
+__all__ = ["JointAxes", "joint_axes", "axes_from_screws"]
 
 
 def joint_axes(robot: Robot, q: Any = None) -> JointAxes:
@@ -79,9 +58,14 @@ def joint_axes(robot: Robot, q: Any = None) -> JointAxes:
         robot.q if q is None else q, robot.n, robot.coordinate_names
     )
     screws = joint_screws(robot, pose_components(robot, values))
-    samples = values.shape[0]
-    point = np.full((samples, robot.n, 3), np.nan)
-    direction = np.full((samples, robot.n, 3), np.nan)
+    return axes_from_screws(screws, values.shape[0], robot.n, batched)
+
+
+def axes_from_screws(screws: list[JointScrew], samples: int, n: int, batched: bool) -> JointAxes:
+    """:class:`JointAxes` from :func:`~robotconf.kinematics.joint_screws` of ``samples``
+    configurations (``batched=False``: one configuration, without its time axis)."""
+    point = np.full((samples, n, 3), np.nan)
+    direction = np.full((samples, n, 3), np.nan)
     for i, screw in enumerate(screws):
         if screw.joint is None or screw.axis is None or screw.point is None:
             continue

@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import copy
 from typing import Any
 
 import numpy as np
@@ -62,6 +63,13 @@ class Link:
     def with_q(self, q: float) -> Link:  # pragma: no cover - abstract
         """A copy with another coordinate value."""
         raise NotImplementedError
+
+    def with_checked_q(self, q: float) -> Link:
+        """A copy holding ``q``, which the caller has checked (a finite float within the
+        bounds :meth:`with_q` enforces): nothing else is validated again."""
+        new = copy.copy(self)
+        object.__setattr__(new, "q", q)
+        return new
 
     def with_name(self, name: str | None) -> Link:  # pragma: no cover - abstract
         """A copy with another display name."""

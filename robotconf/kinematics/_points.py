@@ -7,38 +7,16 @@ the 3D scene and the report all label the same points, so they come from here.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any, NamedTuple
-
-import numpy as np
+from typing import TYPE_CHECKING, Any
 
 from .._errors import InvalidInputError
-from .._validation import check_configuration, check_integer, check_vector3, one_line
+from .._validation import check_configuration
+from ._named_results import END_EFFECTOR_LABEL, RobotPoint, format_point
 
 if TYPE_CHECKING:  # pragma: no cover
     from ._robot import Robot
 
 __all__ = ["RobotPoint", "robot_points", "format_point", "END_EFFECTOR_LABEL"]
-
-#: Name of the end-effector point (as in :class:`~robotconf.Motion`'s points).
-END_EFFECTOR_LABEL = "EE"
-
-
-class RobotPoint(NamedTuple):
-    """A named point: unpacks as ``name, position``.
-
-    Attributes
-    ----------
-    name : str
-        A module name (``"M1"`` or the module's own) or ``"EE"``.
-    position : ndarray, shape (3,)
-        Base-frame position (length units).
-    """
-
-    name: str
-    position: np.ndarray
-
-    def __str__(self) -> str:
-        return format_point(self.name, self.position)
 
 
 def robot_points(robot: Robot, q: Any = None) -> list[RobotPoint]:
@@ -86,34 +64,3 @@ def robot_points(robot: Robot, q: Any = None) -> list[RobotPoint]:
     points = [RobotPoint(name, origins[i]) for i, name in enumerate(robot.module_names)]
     points.append(RobotPoint(END_EFFECTOR_LABEL, robot.end_effector(q)))
     return points
-
-
-def format_point(name: str, xyz: Any, digits: int = 1) -> str:
-    """A point's label as the paper prints it: ``"EE (70.0, 0.0, 20.0)"``.
-
-    Parameters
-    ----------
-    name : str
-    xyz : array-like, shape (3,)
-        Position (length units).
-    digits : int
-        Decimals, 0 to 15. Values that round to zero print as ``0.0``, never ``-0.0``.
-
-    Returns
-    -------
-    str
-
-    Examples
-    --------
-    >>> format_point("EE", [70, -1e-17, 20])
-    'EE (70.0, 0.0, 20.0)'
-    >>> format_point("M3", [29.99996, 0, 20], digits=3)
-    'M3 (30.000, 0.000, 20.000)'
-    """
-    if not isinstance(name, str):
-        raise InvalidInputError("name", one_line(name), "text", problem="not text:")
-    digits = check_integer(digits, "digits", 0, 15)
-    values = check_vector3(xyz, "xyz")
-    # round() first, then + 0.0: a tiny negative would otherwise print as "-0.0".
-    shown = ", ".join(f"{round(v, digits) + 0.0:.{digits}f}" for v in values)
-    return f"{name} ({shown})"

@@ -12,7 +12,7 @@ import numpy as np
 from .._budget import check_memory
 from .._errors import InvalidInputError
 from .._validation import check_configuration, check_integer, check_joint_values, one_line
-from ._bounds import MAX_MODULES, check_parameter_vector
+from ._bounds import MAX_MODULES, MAX_PARAMETER, check_parameter_vector
 from ._dh import check_convention, dh_link_from_row
 from ._geometry import LinkGeometry
 from ._kernel import (
@@ -26,6 +26,7 @@ from ._kernel import (
 from ._limits import chain_length, chain_limits
 from ._link import Link
 from ._names import check_module_names, check_name
+from ._snapshot import RobotSnapshot, chain_snapshot
 
 if TYPE_CHECKING:
     from ..signals import Signal
@@ -118,7 +119,7 @@ class Robot:
     robotconf.InvalidInputError: modules[1].name: modules[0] and modules[1] are both named ...
     """
 
-    __slots__ = ("_links", "_end_effector", "_active", "_name", "_geometry")
+    __slots__ = ("_links", "_end_effector", "_active", "_name", "_geometry", "_at", "_shape")
 
     def __init__(
         self,
@@ -140,6 +141,9 @@ class Robot:
         self._geometry: tuple[LinkGeometry | None, ...] = tuple(
             link.geometry() if i < self.active else None for i, link in enumerate(links)
         )
+        self._at: RobotSnapshot | None = None
+        # Facts that do not depend on q (size, joint ranges), shared by with_q's copies.
+        self._shape: dict[str, Any] = {}
 
     # -- construction -------------------------------------------------------------------
 
@@ -201,19 +205,35 @@ class Robot:
     def with_q(self, q: Any) -> Robot:
         """A copy whose modules hold the coordinates ``q``, shape (n,).
 
+        Only ``q`` is checked (once, for all modules): the links are otherwise the same,
+        so a slider drag costs one validation, not a rebuilt robot.
+
         >>> from robotconf import Module
         >>> robot = Robot([Module("Rz"), Module("Tz")]).with_q([0.5, 2.0])
         >>> robot.q
         array([0.5, 2. ])
         """
         values = check_configuration(q, self.n, self.coordinate_names)
-        links = []
-        for i, (link, v) in enumerate(zip(self._links, values, strict=True)):
+        too_large = np.flatnonzero(np.abs(values) > MAX_PARAMETER)
+        if too_large.size:  # the link's own check names the bound
+            i = int(too_large[0])
             try:
-                links.append(link.with_q(float(v)))
-            except InvalidInputError as error:  # e.g. |q| above MAX_PARAMETER
+                self._links[i].with_q(float(values[i]))
+            except InvalidInputError as error:
                 raise error.within(f"modules[{i}]") from None
-        return self._replace(modules=links)
+        links = tuple(
+            link if link.q == v else link.with_checked_q(float(v))
+            for link, v in zip(self._links, values.tolist(), strict=True)
+        )
+        robot = object.__new__(Robot)
+        robot._links = links
+        robot._end_effector = self._end_effector
+        robot._active = self._active
+        robot._name = self._name
+        robot._geometry = self._geometry  # q-independent: the same kernel description
+        robot._at = None
+        robot._shape = self._shape
+        return robot
 
     def with_module(self, index: int, module: Link) -> Robot:
         """A copy with module ``index`` (0-based) replaced."""
@@ -440,6 +460,48 @@ class Robot:
         result = kernel(self._geometry, values, *args, out=out)
         return result if batched else result[0]
 
+    def at(self, q: Any = None) -> RobotSnapshot:
+        """The robot at one configuration, computed once: frames, end effector, joint axes
+        and labelled points from a single kernel pass (what a picture of it needs).
+
+        Parameters
+        ----------
+        q : array-like, shape (n,), optional
+            Coordinates (radians for rotations, length for translations); default: the
+            modules' own ``q``, whose snapshot is made once and kept by the robot.
+
+        Returns
+        -------
+        RobotSnapshot
+            Its numbers equal those of :meth:`frame_poses`, :meth:`end_effector`,
+            :meth:`end_effector_pose`, :func:`~robotconf.joint_axes` and
+            :func:`~robotconf.robot_points` at ``q``, bit for bit.
+
+        Raises
+        ------
+        InvalidInputError
+            For a bad ``q`` or a trajectory (one configuration only).
+
+        Examples
+        --------
+        >>> from robotconf import Module
+        >>> arm = Robot([Module("Rz"), Module("Rz", a=(1, 0, 0))], end_effector=(1, 0, 0))
+        >>> at = arm.at([np.pi / 2, -np.pi / 2])
+        >>> at.end_effector.round(12) + 0.0, at.frame_origins[1].round(12) + 0.0
+        (array([1., 1., 0.]), array([0., 1., 0.]))
+        """
+        if q is None and self._at is not None:
+            return self._at
+        values = self.q if q is None else check_configuration(q, self.n, self.coordinate_names)
+        poses, tip = chain_snapshot(
+            self._geometry, values[np.newaxis], np.array(self._end_effector)
+        )
+        snapshot = RobotSnapshot(self, values, poses, tip)
+        if q is None:
+            # The robot is immutable: every view of it at its own q shares one kernel pass.
+            self._at = snapshot
+        return snapshot
+
     def transfer_matrices(self, q: Any = None, *, out: np.ndarray | None = None) -> np.ndarray:
         """Each module's transfer matrix ``A_i(q_i)`` (identity when inactive).
 
@@ -623,7 +685,10 @@ class Robot:
                [-60.,  60.],
                [  0.,   0.]])
         """
-        return chain_limits(self._links, self._end_effector)
+        limits = self._shape.get("limits")
+        if limits is None:
+            limits = self._shape["limits"] = chain_limits(self._links, self._end_effector)
+        return limits.copy()
 
     def with_limits(self, index_or_name: Any, limits: Any) -> Robot:
         """A copy where one link has the range ``limits`` (``None``: back to the default).
@@ -752,4 +817,8 @@ def characteristic_length(robot: Robot) -> float:
     >>> characteristic_length(robot)
     60.0
     """
-    return chain_length(robot.modules, robot.end_effector_point)
+    shape = robot._shape
+    length = shape.get("length")
+    if length is None:
+        length = shape["length"] = chain_length(robot.modules, robot.end_effector_point)
+    return float(length)

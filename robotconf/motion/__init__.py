@@ -12,7 +12,7 @@ Displacement, velocity, acceleration (numpy)
     :func:`second_derivative`, :func:`backward_derivative`,
     :func:`backward_second_derivative`
 Tables and statistics (pandas, imported on use)
-    :func:`motion_table`, :func:`motion_stats`, :func:`compare_motions`, :data:`STATS`
+    :func:`motion_table`, :func:`motion_stats`, :func:`compare_motions`, :data:`STATS`, :data:`TIE`
 
 >>> from robotconf.kinematics import Module, Robot
 >>> from robotconf.signals import Ramp
@@ -37,6 +37,7 @@ from ._simulation import simulate
 from ._table import (
     EXCEL_MAX_ROWS,
     STATS,
+    TIE,
     compare_motions,
     motion_stats,
     motion_table,
@@ -72,5 +73,6 @@ __all__ = [
     "motion_to_csv",
     "motion_to_excel",
     "STATS",
+    "TIE",
     "EXCEL_MAX_ROWS",
 ]

@@ -27,6 +27,9 @@ __all__ = ["motion_table", "motion_stats", "compare_motions", "motion_to_csv", "
 TIME_LABEL = "time (s)"
 #: Columns of :func:`motion_stats`, in Simulink Scope's order.
 STATS = ("max", "t_max", "min", "t_min", "peak_to_peak", "mean", "median", "rms")
+#: Relative difference below which two samples are the same extreme for ``t_max`` and
+#: ``t_min`` (float rounding across periods is ~1e-15; shown numbers have 6 digits).
+TIE = 1e-12
 #: Excel's row limit (one header row per column level is added).
 EXCEL_MAX_ROWS = 1_048_576
 
@@ -112,7 +115,8 @@ def motion_stats(motion: Motion) -> pd.DataFrame:
     -------
     pandas.DataFrame
         One row per column ``(point, quantity, axis)``; columns ``max``, ``t_max`` (time
-        of the first maximum, s), ``min``, ``t_min``, ``peak_to_peak`` (max − min),
+        of the first maximum, s: values within :data:`TIE` of the series' magnitude of
+        it count as the same peak), ``min``, ``t_min``, ``peak_to_peak`` (max − min),
         ``mean``, ``median`` and ``rms`` (root mean square ``sqrt(mean(x²))``), each over
         all samples.
 
@@ -133,9 +137,13 @@ def motion_stats(motion: Motion) -> pd.DataFrame:
     check_memory("stats", size, table_bytes(samples, columns), _FEWER_SAMPLES)
     data = motion.columns()
     t = motion.t
-    high, low = data.argmax(axis=1), data.argmin(axis=1)
-    rows = np.arange(data.shape[0])
-    maxima, minima = data[rows, high], data[rows, low]
+    maxima, minima = data.max(axis=1), data.min(axis=1)
+    # A periodic signal peaks once per period in exact arithmetic; in floats a later
+    # period may win by a few ulps. Values within TIE of the extreme are the same peak,
+    # so the time reported is the first one.
+    tie = TIE * np.maximum(np.abs(maxima), np.abs(minima))
+    high = np.argmax(data >= (maxima - tie)[:, np.newaxis], axis=1)
+    low = np.argmax(data <= (minima + tie)[:, np.newaxis], axis=1)
     values = {
         "max": maxima,
         "t_max": t[high],

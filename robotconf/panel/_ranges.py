@@ -19,7 +19,7 @@ from typing import Any
 import numpy as np
 
 from ..kinematics import JOINT_UNITS
-from ._clean_numbers import display_number
+from ._numbers import display_number
 
 __all__ = [
     "length_scale",

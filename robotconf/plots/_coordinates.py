@@ -6,6 +6,7 @@ from typing import TYPE_CHECKING
 
 from ..kinematics import JOINT_UNITS
 from ._figures import new_figure
+from ._grid_layout import grid_of, place_grid
 from ._plain_text import PLAIN
 
 if TYPE_CHECKING:
@@ -28,7 +29,7 @@ def plot_coordinates(motion: Motion, length_unit: str = "length") -> Figure:
     Returns
     -------
     matplotlib.figure.Figure
-        One row per coordinate, sharing the time axis.
+        One row per coordinate, sharing the time axis, laid out when it is built.
 
     Examples
     --------
@@ -41,7 +42,7 @@ def plot_coordinates(motion: Motion, length_unit: str = "length") -> Figure:
     """
     robot = motion.robot
     names = list(motion.signals) or list(robot.coordinate_names)
-    fig = new_figure((9.0, 2.2 + 1.6 * len(names)))
+    fig = new_figure((9.0, 2.2 + 1.6 * len(names)), layout="none")
     axes = fig.subplots(len(names), 1, sharex=True, squeeze=False)[:, 0]
     for ax, name in zip(axes, names, strict=True):
         i = robot.index(name)
@@ -53,4 +54,7 @@ def plot_coordinates(motion: Motion, length_unit: str = "length") -> Figure:
         ax.set_title(f"{name}(t) = {signal!r}" if signal is not None else f"{name}(t)", **PLAIN)
         ax.grid(True, alpha=0.3)
     axes[-1].set_xlabel("time (s)")
+    for ax in axes[:-1]:
+        ax.xaxis.set_label_coords(0.5, 0.0)  # no label: nothing to place at each draw
+    place_grid(fig, grid_of(axes))
     return fig

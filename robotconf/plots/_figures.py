@@ -12,13 +12,21 @@ from __future__ import annotations
 
 import contextlib
 import sys
-from typing import Any
+from typing import Any, Literal
 
 __all__ = ["new_figure"]
 
 
-def new_figure(figsize: Any) -> Any:
-    """A constrained-layout Figure that a notebook cell displays as a picture.
+def new_figure(
+    figsize: Any,
+    *,
+    layout: Literal["constrained", "none"] = "constrained",
+    dpi: float | None = None,
+) -> Any:
+    """A Figure that a notebook cell displays as a picture.
+
+    ``layout`` is matplotlib's layout engine (``"none"`` for figures placed by
+    :mod:`._grid_layout`); ``dpi`` defaults to matplotlib's ``figure.dpi``.
 
     >>> new_figure((4, 3)).get_size_inches().tolist()
     [4.0, 3.0]
@@ -30,4 +38,8 @@ def new_figure(figsize: Any) -> Any:
         with contextlib.suppress(ImportError):
             import matplotlib_inline.backend_inline  # noqa: F401 - notebook figure display
 
-    return Figure(figsize=figsize, layout="constrained")
+    if layout == "constrained":
+        return Figure(figsize=figsize, layout="constrained", dpi=dpi)
+    figure = Figure(figsize=figsize, dpi=dpi)
+    figure.set_layout_engine("none")  # whatever the user's rcParams ask for
+    return figure

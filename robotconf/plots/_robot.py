@@ -16,6 +16,7 @@ from .._errors import InvalidInputError
 from .._validation import check_flag
 from ..kinematics import AXIS_NAMES, format_point, robot_points
 from ._plain_text import PLAIN
+from ._robot_layout import fill_figure, keep_labels_inside
 
 if TYPE_CHECKING:  # pragma: no cover
     from matplotlib.figure import Figure
@@ -104,10 +105,11 @@ def plot_robot(
     labels = check_flag(labels, "labels")
     frames = check_flag(frames, "frames")
     points = robot_points(robot, q)
-    if ax is None:
+    new = ax is None
+    if new:
         from ._figures import new_figure
 
-        fig = new_figure(figsize)
+        fig = new_figure(figsize, layout="none")
         ax = fig.add_subplot(projection="3d")
     elif getattr(ax, "name", None) != "3d":
         raise InvalidInputError(
@@ -123,8 +125,8 @@ def plot_robot(
     lo, hi = chain.min(axis=0), chain.max(axis=0)
     span = float(np.max(hi - lo))
     half = span / 2 if span > 0 else 1.0
+    offset = 0.04 * half
     if labels:
-        offset = 0.04 * half
         for names, xyz in _coincident(points, 1e-9 * half):
             text = format_point(", ".join(names), xyz, digits)
             ax.text(*(xyz + offset), text, fontsize=9, **PLAIN)
@@ -147,5 +149,11 @@ def plot_robot(
     ax.set_xlabel(f"x [{length_unit}]", **PLAIN)
     ax.set_ylabel(f"y [{length_unit}]", **PLAIN)
     ax.set_zlabel(f"z [{length_unit}]", **PLAIN)
-    ax.set_title(f"{robot.name or 'Robot'}: modules (green) and end-effector (red)", **PLAIN)
+    title = ax.set_title(
+        f"{robot.name or 'Robot'}: modules (green) and end-effector (red)", **PLAIN
+    )
+    if new:
+        fill_figure(ax, title)
+        if labels:
+            keep_labels_inside(ax, ax.texts, lift=2 * offset)
     return ax.figure

@@ -37,5 +37,5 @@ def paper(l1: float = 20.0, l2: float = 30.0, l3: float = 40.0) -> Robot:
             Module("Ry", a=(l2, 0.0, 0.0), limits=(-3 * np.pi / 4, 3 * np.pi / 4)),
         ],
         end_effector=(l3, 0.0, 0.0),
-        name="paper R_zR_yR_y",
+        name="paper (RzRyRy)",
     )

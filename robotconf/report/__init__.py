@@ -14,7 +14,7 @@ the 3D scene. Input a user can fix raises :class:`BadInput` (or the core's
 """
 
 from ._bad_input import BadInput
-from ._steps import DPI, MAX_MODULE_PLOTS, RESULT_COPIES, SYMBOLIC_OFF, SYMBOLIC_TOO_LONG
+from ._steps import DPI, DVA_SIZE, MAX_MODULE_PLOTS, RESULT_COPIES, SYMBOLIC_OFF, SYMBOLIC_TOO_LONG
 from ._text import MAX_MESSAGE_CHARS, markdown_text, one_line
 from ._write import write_report
 
@@ -24,6 +24,7 @@ __all__ = [
     "markdown_text",
     "one_line",
     "DPI",
+    "DVA_SIZE",
     "MAX_MODULE_PLOTS",
     "MAX_MESSAGE_CHARS",
     "RESULT_COPIES",

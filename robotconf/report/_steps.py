@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -19,6 +20,7 @@ if TYPE_CHECKING:  # pragma: no cover
 
 __all__ = [
     "DPI",
+    "DVA_SIZE",
     "MAX_MODULE_PLOTS",
     "RESULT_COPIES",
     "SYMBOLIC_OFF",
@@ -34,9 +36,13 @@ __all__ = [
 
 DPI = 100
 
-#: Modules that get a dva_M<i>.png of their own. Each 3 × 3 figure takes about 0.6 s to
-#: lay out and save, so a 64-module chain would spend 40 s on them; the rest are one
-#: ``motion.plot(i)`` away (report.md says so).
+#: Size of the DVA figures in inches: 1000 × 650 pixels at ``DPI``, as the panel's plot
+#: tab draws them.
+DVA_SIZE = (10.0, 6.5)
+
+#: Modules that get a dva_M<i>.png of their own. Each redrawn 3 × 3 figure takes about
+#: 0.1 s to draw and save, so a 64-module chain would still spend 7 s on them; the rest
+#: are one ``motion.plot(i)`` away (report.md says so).
 MAX_MODULE_PLOTS = 16
 
 #: Peak memory of simulate + table + statistics + CSV, in copies of the results (15
@@ -135,30 +141,36 @@ def write_matrices(robot: Robot, out: Path, symbolic: str) -> list[str]:
     return ["matrices.txt", "matrices.tex"]
 
 
-def save_figure(fig: Figure, path: Path) -> None:
-    fig.savefig(path, dpi=DPI)
+def write_plots(motion: Motion, out: Path, unit: str, say: Callable[[str], None]) -> list[str]:
+    """Write robot.png, q.png, dva_EE.png and dva_M<i>.png; after each, ``say`` gets
+    ``"dva_M2.png (figure 5 of 6)"``.
 
-
-def write_plots(motion: Motion, out: Path, unit: str) -> list[str]:
+    The DVA figures are one figure redrawn point after point (:class:`MotionFigure`),
+    several times quicker than a new figure each.
+    """
     import numpy as np
 
-    from ..plots import plot_coordinates, plot_motion, plot_robot
+    from ..plots import MotionFigure, plot_coordinates, plot_robot, save_figure
 
-    written = []
+    names: list[str] = []
+    count = 3 + min(motion.robot.n, MAX_MODULE_PLOTS)
+
+    def save(fig: Figure, name: str) -> None:
+        save_figure(fig, out / name, dpi=DPI)
+        names.append(name)
+        say(f"{name} (figure {len(names)} of {count})")
+
     # One decimal as in the paper's Figure 14, three for arms measured in metres.
     size = float(np.ptp(motion.robot.frame_origins(), axis=0).max())
     digits = 1 if size >= 10 else 3
-    save_figure(plot_robot(motion.robot, length_unit=unit, digits=digits), out / "robot.png")
-    save_figure(plot_coordinates(motion, unit), out / "q.png")
-    written += ["robot.png", "q.png"]
-    save_figure(plot_motion(motion, "EE", displacement=True, length_unit=unit), out / "dva_EE.png")
-    written.append("dva_EE.png")
+    save(plot_robot(motion.robot, length_unit=unit, digits=digits), "robot.png")
+    save(plot_coordinates(motion, unit), "q.png")
+    dva = MotionFigure(motion, displacement=True, length_unit=unit, figsize=DVA_SIZE, dpi=DPI)
+    save(dva.show("EE"), "dva_EE.png")
     # By index, never by name: the file name is always safe and always distinct.
     for i in range(min(motion.robot.n, MAX_MODULE_PLOTS)):
-        name = module_plot(i)
-        save_figure(plot_motion(motion, i, displacement=True, length_unit=unit), out / name)
-        written.append(name)
-    return written
+        save(dva.show(i), module_plot(i))
+    return names
 
 
 def module_plot(index: int) -> str:

@@ -7,6 +7,7 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..io import program_to_json
 from ._bad_input import BadInput
 from ._steps import (
     check_finite,
@@ -65,7 +66,8 @@ def write_report(
     scene : bool
         Write ``scene.html``.
     say : callable, optional
-        Receives one progress line per step.
+        Receives one progress line per step, ``[k/total] …``, and one per figure as it
+        is written: ``[5/7] dva_M2.png (figure 5 of 6)``.
     program : Program, optional
         A robot program to run instead of the signals: its motion (sampled every
         ``settings.dt``, exact derivatives) is what the tables, figures and scene show,
@@ -113,7 +115,7 @@ def write_report(
         raise BadInput(f"--out: cannot create {str(out)!r}: {error.strerror or error}") from None
     files = write_matrices(robot, out, state)
     if program is not None:
-        (out / "program.json").write_text(program.to_json() + "\n", encoding="utf-8")
+        (out / "program.json").write_text(program_to_json(program) + "\n", encoding="utf-8")
         files.append("program.json")
     skipped = {"off": " (symbolic: --no-symbolic)", "too long": " (symbolic: chain too long)"}
     say(f"[3/{total}] {', '.join(files)}{skipped.get(state, '')}")
@@ -121,9 +123,7 @@ def write_report(
     stats.to_csv(out / "statistics.csv")
     files += ["dva.csv", "statistics.csv"]
     say(f"[4/{total}] dva.csv, statistics.csv")
-    plots = write_plots(motion, out, length_unit)
-    files += plots
-    say(f"[5/{total}] {', '.join(plots)}")
+    files += write_plots(motion, out, length_unit, lambda done: say(f"[5/{total}] {done}"))
     if scene:
         files += write_scene(motion, out)
         say(f"[6/{total}] scene.html")

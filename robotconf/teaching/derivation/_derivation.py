@@ -248,7 +248,8 @@ def derivation(
 def _numeric_derivation(robot: Robot, q: Any, precision: int) -> Derivation:
     values = robot.q if q is None else check_configuration(q, robot.n, robot.coordinate_names)
     transfer = robot.transfer_matrices(values)
-    poses = robot.frame_poses(values)
+    # At its own q the robot keeps one snapshot, which the 3D view draws too.
+    poses = robot.at().frame_poses if q is None else robot.frame_poses(values)
     config = tuple(float(v) for v in values)
     common: dict[str, Any] = {"robot": robot, "q": config, "symbolic": False, "lengths": False}
     common["precision"] = precision
