@@ -11,6 +11,7 @@ import contextlib
 import io
 import re
 
+import numpy as np
 import pytest
 
 from robotconf.grading import robotconf_calls
@@ -141,7 +142,8 @@ def _setup_namespace(path) -> dict:
     """The notebook's names after its setup cells (not the answers, checks or practice)."""
     namespace: dict = {}
     skip = {ANSWER_TAG, CHECK_TAG, "practice"}
-    with contextlib.redirect_stdout(io.StringIO()):
+    # The setup cells set numpy's print options; they are put back after the run.
+    with np.printoptions(), contextlib.redirect_stdout(io.StringIO()):
         for cell in read_notebook(path).cells:
             if cell.cell_type == "code" and not skip & set(cell.metadata.get("tags", [])):
                 exec(compile(_code(cell.source), str(path), "exec"), namespace)  # our notebook

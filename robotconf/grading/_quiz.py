@@ -23,6 +23,7 @@ from __future__ import annotations
 
 import json
 import os
+import platform
 import re
 from dataclasses import dataclass
 from pathlib import Path
@@ -47,6 +48,20 @@ __all__ = [
 
 QUIZZES_FILE = Path("kit") / "quizzes.md"
 EXAM_BANK_FILE = Path("kit") / "exam_bank.md"
+#: What JupyterLab writes into a notebook when ipykernel starts; a written quiz holding
+#: the same opens without the unsaved-changes dot (like course/ and notebooks/).
+NOTEBOOK_METADATA: dict[str, Any] = {
+    "kernelspec": {"display_name": "Python 3 (ipykernel)", "language": "python", "name": "python3"},
+    "language_info": {
+        "codemirror_mode": {"name": "ipython", "version": 3},
+        "file_extension": ".py",
+        "mimetype": "text/x-python",
+        "name": "python",
+        "nbconvert_exporter": "python",
+        "pygments_lexer": "ipython3",
+        "version": platform.python_version(),
+    },
+}
 _OPTION = re.compile(r"(\d{1,2})\.(\d{1,2})")
 
 
@@ -192,14 +207,7 @@ def _notebook(
         cells.append(_cell("code", check, tags, f"check-{i}"))
     return {
         "cells": cells,
-        "metadata": {
-            "kernelspec": {
-                "display_name": "Python 3 (ipykernel)",
-                "language": "python",
-                "name": "python3",
-            },
-            "language_info": {"name": "python"},
-        },
+        "metadata": json.loads(json.dumps(NOTEBOOK_METADATA)),
         "nbformat": 4,
         "nbformat_minor": 5,
     }

@@ -3,11 +3,11 @@
 Student answers are untrusted text graded on the teacher's machine, so every step is
 bounded (see :func:`check_matrix`, "Budget"): numbers decide first (both matrices at
 ``samples`` seeded random points, in complex arithmetic:
-:mod:`robotconf.teaching._numeric_judge`); only an entry the numbers cannot decide gets
-symbolic work, and only within :mod:`robotconf.teaching._budget_rules`. Wrong entries are
-then explained by rebuilding the usual mistakes (see :mod:`robotconf.teaching._mistakes`),
+:mod:`robotconf.teaching.reading._numeric_judge`); only an entry the numbers cannot decide gets
+symbolic work, and only within :mod:`robotconf.teaching.reading._budget_rules`. Wrong entries are
+then explained by rebuilding the usual mistakes (see :mod:`robotconf.teaching.diagnosis._mistakes`),
 keeping the ones the student's answer matches, numerically too, and ranking them
-(:mod:`robotconf.teaching._diagnosis`): the hints name one primary diagnosis.
+(:mod:`robotconf.teaching.diagnosis._diagnose`): the hints name one primary diagnosis.
 """
 
 from __future__ import annotations
@@ -345,7 +345,7 @@ def check_matrix(
        ``+ * **``, numbers, symbols, ``sin``, ``cos``, ``tan``; an estimated ≤ 200
        expanded terms per entry (``MAX_EXPANDED_TERMS``) and ≤ 300 for the whole answer
        (``MAX_CHECK_TERMS``), for at most 4 entries (``MAX_SYMBOLIC_ENTRIES``); all in
-       :mod:`robotconf.teaching._budget_rules`. Anything else is "too complicated to
+       :mod:`robotconf.teaching.reading._budget_rules`. Anything else is "too complicated to
        check".
     3. Hints compare numbers only: every candidate mistake is rebuilt at the same points,
        the ones that fit are ranked (all wrong entries explained first, then how many,

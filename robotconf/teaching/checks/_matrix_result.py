@@ -81,7 +81,7 @@ class MatrixCheck:
         The primary diagnosis explains every wrong entry (one slip, nothing else wrong).
     diagnoses : tuple of str
         Every explanation that fits the wrong entries, ranked best first, each code once
-        (see :mod:`robotconf.teaching._ranking`); empty when the answer is right or
+        (see :mod:`robotconf.teaching.diagnosis._ranking`); empty when the answer is right or
         nothing fits. ``("no_answer",)``, ``("shape",)`` or ``("transposed_matrix",)``
         when there is no answer or it has another shape.
 

@@ -2,8 +2,8 @@
 
 :func:`check_value`, :func:`check_vector` and :func:`check_angle` judge a number, a
 position or velocity, and angles modulo a full turn; sets of solutions and intervals are in
-:mod:`robotconf.teaching._answer_checks_sets`, the ``assert_*`` forms for autograder cells
-in :mod:`robotconf.teaching._answer_checks_assert`. All of them read the student's answer
+:mod:`robotconf.teaching.checks._sets`, the ``assert_*`` forms for autograder cells
+in :mod:`robotconf.teaching.checks._asserts`. All of them read the student's answer
 through :func:`~robotconf.teaching.check_matrix`'s whitelist parser and numeric judge, so
 an answer may be a number, a list, an array or text such as ``"pi/2"`` or
 ``"[0, 35, -40]"``; text is never evaluated.

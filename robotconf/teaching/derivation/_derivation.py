@@ -3,7 +3,7 @@
 The paper validated its numbers with a second tool (Mathcad, Figure 15); a
 :class:`Derivation` shows the same chain of matrices in the notebook, numerically at one
 configuration (from the numpy core) or symbolically (from
-:mod:`robotconf.teaching._symbolic_chain`).
+:mod:`robotconf.teaching.derivation._symbolic_chain`).
 """
 
 from __future__ import annotations

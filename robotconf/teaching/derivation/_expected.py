@@ -7,7 +7,7 @@ A bare matrix only allows context-free hints (a transposed block, a swapped row)
 
 This module also samples random points and evaluates sympy expressions there (a numpy
 walk of the expression tree, no code generation: see
-:mod:`robotconf.teaching._numeric_eval`).
+:mod:`robotconf.teaching.reading._numeric_eval`).
 """
 
 from __future__ import annotations

@@ -9,7 +9,7 @@ Symbols are real:
 non-zero lengths in the order they appear along the chain (for the paper's R_zR_yR_y
 robot this gives its ``l1 = 20``, ``l2 = 30``, ``l3 = 40``).
 
-A whole robot's chain is :mod:`robotconf.teaching._symbolic_chain`. sympy is imported
+A whole robot's chain is :mod:`robotconf.teaching.derivation._symbolic_chain`. sympy is imported
 inside the functions, so ``import robotconf`` stays numpy-only.
 """
 

@@ -1,8 +1,8 @@
 """A robot's kinematics in sympy: every A_i, M_i and p_EE, simplified for a person to read.
 
-Built from the sympy link matrices of :mod:`robotconf.teaching._symbolic` (the independent
-second implementation), never from the numpy kernel. sympy is imported inside the
-functions, so ``import robotconf`` stays numpy-only.
+Built from the sympy link matrices of :mod:`robotconf.teaching.derivation._symbolic` (the
+independent second implementation), never from the numpy kernel. sympy is imported inside
+the functions, so ``import robotconf`` stays numpy-only.
 """
 
 from __future__ import annotations

@@ -1,8 +1,8 @@
 """A candidate mistake: the wrong answer one slip produces, and the sentence naming the slip.
 
-Every family of mistakes (:mod:`robotconf.teaching._mistakes` and the
+Every family of mistakes (:mod:`robotconf.teaching.diagnosis._mistakes` and the
 ``_mistakes_*`` files) describes its wrong answers as :class:`Candidate` objects; the
-ranking (:mod:`robotconf.teaching._ranking`) compares them with the student's answer.
+ranking (:mod:`robotconf.teaching.diagnosis._ranking`) compares them with the student's answer.
 This file also holds the wording the families share: how a module is named in a hint and
 where the sines of an elementary rotation sit.
 """

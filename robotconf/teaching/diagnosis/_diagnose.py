@@ -1,10 +1,10 @@
 """The diagnosis of a wrong answer: every explanation that fits, ranked, and the hints.
 
-Candidates come from every family of mistakes (:mod:`robotconf.teaching._mistakes`,
+Candidates come from every family of mistakes (:mod:`robotconf.teaching.diagnosis._mistakes`,
 context-aware, and the context-free transposes and swaps); the ones that fit become
 explanations, together with the entry-level ones (a coarse rounding, a sign, a zero in
-the translation column: :func:`~robotconf.teaching._hints.entry_groups`). They are ranked
-(:mod:`robotconf.teaching._ranking`) and the best one is the primary diagnosis; the hints
+the translation column: :func:`~robotconf.teaching.diagnosis._hints.entry_groups`). They are ranked
+(:mod:`robotconf.teaching.diagnosis._ranking`) and the best one is the primary diagnosis; the hints
 name it once, mention an equivalent reading in the same sentence, and describe whatever
 it leaves unexplained entry by entry.
 """

@@ -2,9 +2,9 @@
 
 Such entries are sorted into groups a sentence can name (rounded too coarsely, a sign
 error on a sine or on the whole entry, a zero in the translation column) and the rest,
-which is named entry by entry. Helpers of :mod:`robotconf.teaching._checker`; the
-candidate mistakes come from :mod:`robotconf.teaching._mistakes` and are ranked by
-:mod:`robotconf.teaching._ranking`.
+which is named entry by entry. Helpers of :mod:`robotconf.teaching.checks._matrix`; the
+candidate mistakes come from :mod:`robotconf.teaching.diagnosis._mistakes` and are ranked by
+:mod:`robotconf.teaching.diagnosis._ranking`.
 """
 
 from __future__ import annotations
@@ -124,7 +124,8 @@ class EntryGroup:
         The mistake code: ``"coarse_rounding"``, ``"sign_error"`` or ``"missing_offset"``.
     entries : frozenset of (int, int)
     tier : int
-        0 for a coarse rounding, 4 for the others (see :mod:`robotconf.teaching._ranking`).
+        0 for a coarse rounding, 4 for the others
+        (see :mod:`robotconf.teaching.diagnosis._ranking`).
     """
 
     kind: str

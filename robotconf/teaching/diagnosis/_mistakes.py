@@ -4,7 +4,7 @@ Each :class:`Candidate` is what a student would have written after making one sp
 mistake, evaluated at the same sample points as the expected matrix, together with the
 sentence that explains the mistake. The checker recognises a mistake when the student's
 wrong entries agree with a candidate, and ranks the candidates that do
-(:mod:`robotconf.teaching._ranking`).
+(:mod:`robotconf.teaching.diagnosis._ranking`).
 
 Context-aware candidates need the robot and the matrix name (an
 :class:`~robotconf.teaching.ExpectedMatrix` from ``expected_matrix`` or a derivation
@@ -49,7 +49,7 @@ def link_message(code: str, j: int, link: Any) -> tuple[str, str]:
     Parameters
     ----------
     code : str
-        One of :func:`~robotconf.teaching._diagnosis_context.link_mistakes`.
+        One of :func:`~robotconf.teaching.diagnosis._context.link_mistakes`.
     j : int
     link : Module or DHLink
 

@@ -47,7 +47,7 @@ class Finding:
     Attributes
     ----------
     code : str
-        The diagnosis (see :data:`robotconf.teaching._ik_answers.IK_DIAGNOSES`).
+        The diagnosis (see :data:`robotconf.teaching.ik_answers._result.IK_DIAGNOSES`).
     hint : str
         A sentence the student can act on; it quotes no solution.
     fixed : ndarray, shape (n,), or None

@@ -1,6 +1,6 @@
 """The checker's symbolic budget: how much algebra a student's entry may cost.
 
-The checker decides equality numerically (see :mod:`robotconf.teaching._numeric_judge`).
+The checker decides equality numerically (see :mod:`robotconf.teaching.reading._numeric_judge`).
 Only an entry the numbers cannot decide (undefined, NaN, at some sample points) goes on to
 ``expand(expand_trig(student − expected))``, followed by ``sin² → 1 − cos²``, and only
 when one walk of the expression tree (never more than :data:`MAX_SYMBOLIC_NODES` nodes)

@@ -1,14 +1,14 @@
 """Numbers first: the checker's verdict on each entry from its values at sample points.
 
 Both matrices are evaluated at the same seeded random points in complex arithmetic
-(:mod:`robotconf.teaching._numeric_eval`), which is linear in the size of the answer and
+(:mod:`robotconf.teaching.reading._numeric_eval`), which is linear in the size of the answer and
 cannot hang. Per entry:
 
 - **right** when student and expected agree within ``tol`` at every point;
 - **wrong** when they differ at a point where both are finite, or one side overflows to
   infinity where the other is finite: no symbolic work is needed to say so;
 - **undecided** otherwise (a side is undefined, NaN, at some points); only these go on
-  to the symbolic check within the budget of :mod:`robotconf.teaching._budget_rules`.
+  to the symbolic check within the budget of :mod:`robotconf.teaching.reading._budget_rules`.
 
 Before any of that a student's entry is screened: the imaginary unit, an infinite value,
 a number over ``MAX_NUMBER_BITS`` bits (as in the parser) or a function outside the
