@@ -71,9 +71,11 @@ from .programs import (
 )
 from .teaching import (
     AnswerCheck,
+    Assignment,
     Derivation,
     DerivationStep,
     DHTableCheck,
+    Exam,
     ExpectedMatrix,
     IKCheck,
     MatrixCheck,
@@ -170,6 +172,8 @@ __all__ = [
     "assert_dh_table",
     "DHTableCheck",
     "Variant",
+    "Assignment",
+    "Exam",
     # inverse kinematics
     "ik",
     "ik_all",

@@ -28,6 +28,8 @@ from pathlib import Path
 
 import nbformat
 
+from robotconf.grading._notebook_cells import answer_variable
+
 __all__ = [
     "COURSE",
     "SOLUTIONS",
@@ -104,9 +106,10 @@ def _assigned_name(source: str, where: str) -> str:
         for target in (node.targets if isinstance(node, ast.Assign) else [node.target])
         if isinstance(target, ast.Name)
     ]
-    if len(set(names)) != 1:
-        raise ValueError(f"{where}: an answer cell must assign exactly one variable, got {names}")
-    return names[0]
+    variable = answer_variable(names)
+    if variable is None:
+        raise ValueError(f"{where}: an answer cell must assign one answer_ variable, got {names}")
+    return variable
 
 
 def _used_names(source: str) -> set[str]:
@@ -116,8 +119,9 @@ def _used_names(source: str) -> set[str]:
 def exercise_cells(path: str | os.PathLike) -> list[Exercise]:
     """The exercises of a notebook, in order, each an answer cell paired with its check cell.
 
-    An answer cell (tag ``answer``) assigns one variable; its check cell is the first later
-    cell tagged ``check`` whose code uses that variable.
+    An answer cell (tag ``answer``) assigns one ``answer_…`` variable (its worked steps may
+    name helpers first); its check cell is the first later cell tagged ``check`` whose code
+    uses that variable.
 
     Raises
     ------

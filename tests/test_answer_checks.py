@@ -46,10 +46,11 @@ def test_right_values_pass(answer, expected):
 
 @pytest.mark.parametrize(
     ("answer", "expected"),
-    [(3.2, PI), (1.58, PI / 2), (100.11, 100.0), (0.0011, 0.0), ("pi/3", PI / 2)],
+    [(3.2, PI), (1.59, PI / 2), (100.6, 100.0), (0.0011, 0.0), ("pi/3", PI / 2)],
 )
 def test_wrong_values_fail(answer, expected):
-    # 3.2 − π = 0.058 > 0.0031; 100.11 − 100 = 0.11 > 0.1; 0.0011 > 0.001 near 0
+    # 3.2 − π = 0.058 > 0.016; 1.59 − π/2 = 0.019 > 0.0079; 100.6 − 100 = 0.6 > 0.5;
+    # 0.0011 > 0.001 near 0
     result = rc.check_value(answer, expected)
     assert not result.ok and result.diagnosis == "wrong"
 
@@ -309,22 +310,22 @@ def test_set_mistakes():
 
 
 def test_large_sets_are_judged_element_by_element():
-    solutions = 1 + np.arange(400) / 100  # 1, 1.01, …, 4.99
-    assert rc.check_set(solutions[::-1], solutions).ok
+    solutions = 1 + np.arange(400) / 100  # 1, 1.01, …, 4.99: distinct within 0.1 %
+    assert rc.check_set(solutions[::-1], solutions, rel=1e-3).ok
     answer = solutions * 1000
     answer[0] = 1.0  # right; the rest are ×1000
-    result = rc.check_set(answer, solutions)
+    result = rc.check_set(answer, solutions, rel=1e-3)
     assert result.diagnosis == "unit_factor" and len(result.extra) == 399
     assert len(result.wrong) == 399 and result.wrong[:2] == [1, 2]
     assert result.hints == [
         "1010, 1020, 1030, 1040, 1050, 1060 and 393 more are 1000 times too large."
     ]
-    repeated = rc.check_set([0.0] * 400, np.arange(400.0))
+    repeated = rc.check_set([0.0] * 400, np.arange(400.0), rel=1e-3)
     assert repeated.hints[0] == "0 is given more than once: give each solution once."
 
 
 def test_long_lists_of_components_are_cut():
-    result = rc.check_vector(np.arange(400.0) + 0.5, np.arange(400.0) + 1)
+    result = rc.check_vector(np.arange(400.0) + 0.5, np.arange(400.0) + 1, rel=1e-3)
     assert result.hints[-1].endswith("component 6 and 394 more are wrong.")
     assert str(result).startswith("the vector: 400 wrong components (component 1, ")
 

@@ -30,7 +30,7 @@ from robotconf.teaching import (
     module_matrix,
     parse_expression,
 )
-from robotconf.teaching._budget_rules import (
+from robotconf.teaching.reading._budget_rules import (
     MAX_CHECK_TERMS,
     MAX_EXPAND_EXPONENT,
     MAX_SYMBOLIC_ENTRIES,
@@ -483,11 +483,12 @@ def test_course_solutions_still_pass(path, monkeypatch):
 
     monkeypatch.setattr(rc, "check_matrix", recording)
     monkeypatch.setattr(rc.teaching, "check_matrix", recording)
-    monkeypatch.setattr("robotconf.teaching._checker.check_matrix", recording)
+    monkeypatch.setattr("robotconf.teaching.checks._matrix.check_matrix", recording)
     namespace: dict[str, Any] = {"__name__": "__solutions__"}
-    for cell in read_notebook(path).cells:
-        if cell.cell_type == "code" and not cell.source.lstrip().startswith(("%", "!")):
-            exec(compile(cell.source, str(path), "exec"), namespace)  # our own notebook
+    with np.printoptions():  # the notebooks set numpy's print options; put them back
+        for cell in read_notebook(path).cells:
+            if cell.cell_type == "code" and not cell.source.lstrip().startswith(("%", "!")):
+                exec(compile(cell.source, str(path), "exec"), namespace)  # our own notebook
     # Every check cell ran above (a failed assert_* raises); the matrix checks are counted
     # too, so a notebook whose checks stopped reaching the checker is caught.
     checks = [e for e in exercise_cells(path) if "_matrix(" in e.check_source]

@@ -224,7 +224,7 @@ def test_hint_helpers_stay_numpy_only_and_never_evaluate_text():
     import subprocess
     import sys
 
-    source = (pathlib.Path(rc.__file__).parent / "teaching" / "_hints.py").read_text()
+    source = (pathlib.Path(rc.__file__).parent / "teaching" / "diagnosis" / "_hints.py").read_text()
     assert not re.search(r"\b(eval|exec|sympify|parse_expr)\(", source)
     code = "import sys, robotconf.teaching; assert 'sympy' not in sys.modules"
     subprocess.run([sys.executable, "-c", code], check=True)

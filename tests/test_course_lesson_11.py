@@ -22,18 +22,21 @@ LESSON = COURSE / "11_inverse_kinematics"
 EXERCISES = LESSON / "exercises.ipynb"
 VARIABLES = [f"answer_{i}" for i in range(1, 8)]
 
-# The exercise arm and target, solved by hand: r² = 7.25, cos q2 = 1/6.
-L1, L2, TARGET = 2.0, 1.5, (-1.0, 2.5)
-Q2 = math.acos(1 / 6)
+# The demo student's arm and target (rc.Assignment), solved by hand with the law of cosines.
+TASK = rc.Assignment("11_inverse_kinematics", "demo")
+L1, L2 = TASK["l1"], TASK["l2"]
+TARGET = tuple(float(x) for x in TASK["target"][:2])
+Q2 = math.acos((TARGET[0] ** 2 + TARGET[1] ** 2 - L1**2 - L2**2) / (2 * L1 * L2))
 BETA = math.atan2(L2 * math.sin(Q2), L1 + L2 * math.cos(Q2))
-DOWN = (math.atan2(TARGET[1], TARGET[0]) - BETA, Q2)  # (1.3698, 1.4033)
-UP = (math.atan2(TARGET[1], TARGET[0]) + BETA, -Q2)  # (2.5328, -1.4033)
+DOWN = (math.atan2(TARGET[1], TARGET[0]) - BETA, Q2)
+UP = (math.atan2(TARGET[1], TARGET[0]) + BETA, -Q2)
+LAMBDA = TASK["lam"]
 
 # variable -> (code of the answer cell, words the failure must contain)
 WRONG_A = {
     # atan(y/x) for a target with x < 0: q1 off by π
     "answer_1": (
-        "answer_1 = [np.arctan(2.5 / -1.0) - np.arctan2(np.sqrt(35) / 4, 2.25), np.arccos(1 / 6)]",
+        f"answer_1 = [np.arctan({TARGET[1]} / {TARGET[0]}) - {BETA}, {Q2}]",
         "q1 is off by half a turn",
     ),
     # the elbow-up solution forgotten
@@ -42,11 +45,11 @@ WRONG_A = {
     # e = p(q_k) − p*: the step goes the wrong way
     "answer_4": ("answer_4 = q_k - np.linalg.solve(J_k, e_k)", "the target minus the tip"),
     # the Newton step where the damped one is asked
-    "answer_5": ("answer_5 = q_k + np.linalg.solve(J_k, e_k)", "Add λ = 0.5 to the diagonal"),
-    # measured from the base origin: 109.66 − 70
-    "answer_6": ("answer_6 = np.linalg.norm([60, 45, 80]) - 70", "Measure from the shoulder"),
+    "answer_5": ("answer_5 = q_k + np.linalg.solve(J_k, e_k)", "undamped Newton step"),
+    # measured from the base origin
+    "answer_6": ("answer_6 = np.linalg.norm(far) - 70", "Measure from the shoulder"),
     # the cause taken for the dependent joints
-    "answer_7": ("answer_7 = [5]", "5 is not a solution"),
+    "answer_7": ("answer_7 = [5]", "q5 = 0 is the cause"),
 }
 WRONG_B = {
     # degrees
@@ -59,6 +62,17 @@ WRONG_B = {
         f"answer_2 = [[{DOWN[0]}, {DOWN[1]}], [{DOWN[0]}, {-DOWN[1]}]]",
         "come from different elbow solutions",
     ),
+    # the inner radius taken as 0
+    "answer_3": ("answer_3 = [0, l1 + l2]", "The inner radius is not 0"),
+    # Jᵀe for Newton's solve
+    "answer_4": ("answer_4 = q_k + J_k.T @ e_k", "the gradient step"),
+    # λ² on the diagonal
+    "answer_5": (
+        "answer_5 = q_k + np.linalg.solve(J_k.T @ J_k + lam**2 * np.eye(2), J_k.T @ e_k)",
+        "not λ²",
+    ),
+    # joints counted from 0
+    "answer_7": ("answer_7 = [3, 5]", "Number the joints from 1"),
 }
 
 RIGHT_OTHERWISE = {
@@ -66,33 +80,47 @@ RIGHT_OTHERWISE = {
     "answer_2": (
         f'answer_2 = "[[{UP[0]:.4f}, {UP[1]:.4f}], [{DOWN[0]:.4f} + 2*pi, {DOWN[1]:.4f}]]"'
     ),
-    "answer_3": 'answer_3 = "[0.5, 3.5]"',
+    "answer_3": f'answer_3 = "[{abs(L1 - L2):.3g}, {L1 + L2:.3g}]"',
     "answer_4": (
         "answer_4 = q_k + np.array([[J_k[1, 1], -J_k[0, 1]], [-J_k[1, 0], J_k[0, 0]]]) @ e_k"
         " / np.linalg.det(J_k)"
     ),
-    "answer_5": 'answer_5 = "[1.2006, 1.5642]"',
-    "answer_6": 'answer_6 = "26.05"',
+    "answer_5": (
+        "step = np.linalg.solve(J_k.T @ J_k + lam * np.eye(2), J_k.T @ e_k)\n"
+        'answer_5 = "[" + ", ".join(f"{x:.3g}" for x in q_k + step) + "]"'
+    ),
+    "answer_6": 'answer_6 = f"{np.linalg.norm(far - [0, 0, 20]) - 70:.3g}"',
     "answer_7": "answer_7 = [6, 4]",
 }
 
 
 def test_hand_numbers_agree_with_the_robot():
     arm = rc.preset("planar_2r", l1=L1, l2=L2)
+    assert TARGET[0] < 0  # the quadrant atan(y/x) loses
     for q in (DOWN, UP):
         assert np.allclose(arm.end_effector(q)[:2], TARGET)
-    assert np.allclose(ik_all(arm, [*TARGET, 0]).q, [DOWN, UP])
-    assert ik_all(arm, [*TARGET, 0]).labels == ("elbow down", "elbow up")
+    wrapped = np.angle(np.exp(1j * np.array([DOWN, UP])))  # the solver gives (−π, π]
+    assert np.allclose(np.sort(ik_all(arm, [*TARGET, 0]).q, axis=0), np.sort(wrapped, axis=0))
     # Exercise 6: the shoulder (0, 0, 20) is the centre, l2 + l3 = 70 the radius.
-    far = ik(rc.preset("paper"), [60, 45, 80])
+    point = TASK["far"]
+    far = ik(rc.preset("paper"), point)
     assert far.reason == "unreachable"
-    assert far.distance_to_reach == pytest.approx(math.sqrt(60**2 + 45**2 + 60**2) - 70)
-    # Exercise 5's rounded answer is the damped step.
-    q_k = np.array([1.0, 1.0])
+    assert far.distance_to_reach == pytest.approx(np.linalg.norm(point - [0, 0, 20]) - 70)
+    # Exercise 5: the damped step by the normal equations.
+    q_k = TASK["q_k"]
     J = rc.jacobian(arm, q_k)[:2]
     e = np.array(TARGET) - arm.end_effector(q_k)[:2]
-    step = np.linalg.solve(J.T @ J + 0.5 * np.eye(2), J.T @ e)
-    assert np.allclose(q_k + step, [1.2006, 1.5642], atol=1e-4)
+    assert np.allclose(J, TASK["J_k"]) and np.allclose(e, TASK["e_k"])
+    step = np.linalg.solve(J.T @ J + LAMBDA * np.eye(2), J.T @ e)
+    assert TASK.check(5, q_k + step).ok
+    # Exercise 7: with q5 = 0, joints 4 and 6 turn about one line.
+    assert TASK["q_w"][4] == 0 and TASK.answer(7) == [4, 6]
+
+
+def test_another_student_gets_another_arm_or_target():
+    other = rc.Assignment("11_inverse_kinematics", "s1234567")
+    mine = (L1, L2, tuple(TASK["target"]))
+    assert (other["l1"], other["l2"], tuple(other["target"])) != mine
 
 
 def test_the_exercises_pair_up():

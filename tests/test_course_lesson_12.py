@@ -1,6 +1,7 @@
 """Lesson 12 (trajectories): solutions pass, blanks fail kindly, slips are named, ids differ.
 
-The exercises draw their numbers from the student id (``rc.Variant``). The notebooks run
+The exercises draw their numbers from the student id (``rc.Assignment``: drawn with
+``rc.Variant`` and screened so that every typical slip gives a refused answer). The notebooks run
 once per case: the solutions as committed (id ``"demo"``), the solutions under another id
 with answers written another right way, the blank exercises, two runs of typical wrong
 answers, and the exercises under another id with the demo student's numbers (which must
@@ -30,23 +31,21 @@ OTHER_ID = "s1234567"
 
 def _numbers(student: str) -> dict:
     """A student's drawn numbers and right answers, worked out by hand."""
-    v = rc.Variant(student, LESSON)
-    d1, v_max = v.length("d1", 1.0, 2.5, step=0.1), v.length("v_max", 0.5, 1.0, step=0.1)
-    a_max = v.length("a_max", 1.0, 2.5, step=0.5)
-    d2 = float(f"{v.choice('d2 share', [0.25, 0.36, 0.49, 0.64]) * v_max**2 / a_max:.3g}")
-    d3, T3 = v.length("d3", 0.5, 2.0, step=0.1), v.choice("T3", [1.5, 2.0, 2.5, 3.0, 4.0])
-    steps = [-1.2, -1.0, -0.8, -0.6, -0.4, 0.4, 0.6, 0.8, 1.0, 1.2]
-    delta = [v.choice(f"delta q{j}", steps) for j in (1, 2, 3)]
-    speed = [v.choice(f"speed q{j}", [0.5, 0.8, 1.0, 1.2, 1.5]) for j in (1, 2, 3)]
-    ratio = v.choice("accel / speed", [1.5, 2.0, 2.5])
-    accel = [round(ratio * s, 2) for s in speed]
+    task = rc.Assignment(LESSON, student)
+    d1, v_max, a_max, d2 = task["d1"], task["v_max"], task["a_max"], task["d2"]
+    d3, T3 = task["d3"], task["T3"]
+    delta, speed, accel = task["delta_4"], task["speed_4"], task["accel_4"]
     own = [
         abs(d) / s + s / a if abs(d) >= s**2 / a else 2 * math.sqrt(abs(d) / a)
         for d, s, a in zip(delta, speed, accel, strict=True)
     ]
-    l1, l2 = v.length("l1", 0.6, 1.0, step=0.1), v.length("l2", 0.4, 0.8, step=0.1)
+    # one law for all joints: u̇ ≤ V = min v/|Δ|, |ü| ≤ A = min a/|Δ|, u from 0 to 1
+    V = min(s / abs(d) for d, s in zip(delta, speed, strict=True))
+    A = min(a / abs(d) for d, a in zip(delta, accel, strict=True))
+    synchronized = 1 / V + V / A if V**2 / A <= 1 else 2 * math.sqrt(1 / A)
+    l1, l2 = task["l1"], task["l2"]
     L = l1 + l2
-    x_star = round(v.choice("x* share", [0.85, 0.88, 0.9, 0.92, 0.94]) * L, 4)
+    x_star = task["x_star"]
     cos_q2 = (x_star**2 - l1**2 - l2**2) / (2 * l1 * l2)
     sin_q2 = math.sqrt(1 - cos_q2**2)
     q1 = -math.atan2(l2 * sin_q2, l1 + l2 * cos_q2)  # elbow with q2 > 0
@@ -69,7 +68,7 @@ def _numbers(student: str) -> dict:
         "answer_1": [v_max / a_max, d1 / v_max + v_max / a_max, v_max],
         "answer_2": [math.sqrt(d2 / a_max), 2 * math.sqrt(d2 / a_max), math.sqrt(d2 * a_max)],
         "answer_3": 15 / 8 * d3 / T3,
-        "answer_4": max(own),
+        "answer_4": synchronized,
         "answer_6": speed_6 * x_star / (l1 * l2 * sin_q2),
         "qd1_6": abs(speed_6 * math.cos(q1 + math.acos(cos_q2)) / (l1 * sin_q2)),
     }
@@ -121,12 +120,12 @@ WRONG_B = {
         "covers only half the distance",
     ),
     "answer_3": ("answer_3 = d3 / T3", "the average speed"),
-    "answer_4": (  # the fastest joint's own time
-        "answer_4 = min(\n"
+    "answer_4": (  # the slowest joint's own time: both limits bind on different joints
+        "answer_4 = max(\n"
         "    abs(d) / v + v / a if abs(d) >= v**2 / a else 2 * np.sqrt(abs(d) / a)\n"
         "    for d, v, a in zip(delta_4, speed_4, accel_4)\n"
         ")",
-        "is not the slowest joint",
+        "slower than every joint alone",
     ),
     "answer_5": ("answer_5 = [4]", "Give indices from 0"),
 }
@@ -143,10 +142,9 @@ OTHER_RIGHT = {
     ),
     "answer_3": 'answer_3 = f"15/8 * {d3} / {T3}"',
     "answer_4": (  # the one duration, given for every joint
-        "T_4 = max(\n"
-        "    abs(d) / v + v / a if abs(d) >= v**2 / a else 2 * np.sqrt(abs(d) / a)\n"
-        "    for d, v, a in zip(delta_4, speed_4, accel_4)\n"
-        ")\n"
+        "V = min(v / abs(d) for d, v in zip(delta_4, speed_4))\n"
+        "A = min(a / abs(d) for d, a in zip(delta_4, accel_4))\n"
+        "T_4 = 1 / V + V / A if V**2 / A <= 1 else 2 * np.sqrt(1 / A)\n"
         "answer_4 = [T_4, T_4, T_4]"
     ),
     "answer_5": 'answer_5 = "[3]"',
@@ -199,22 +197,23 @@ def test_exercises_and_solutions_pair_up():
     for exercise, solution in zip(exercises, solutions, strict=True):
         assert exercise.check_source == solution.check_source, exercise.variable
         assert exercise.answer_source != solution.answer_source, exercise.variable
-        assert "rc.assert_" in exercise.check_source  # every check through a checker
+        number = exercise.variable.split("_")[1]  # every check through the lesson's checker
+        assert f"task.assert_answer({number}, {exercise.variable})" in exercise.check_source
         assert "np.isclose" not in exercise.check_source
 
 
 @pytest.mark.parametrize(
     "path", [EXERCISES, solutions_path(EXERCISES)], ids=["exercises", "solutions"]
 )
-def test_one_student_id_cell_feeds_every_variant(path):
+def test_one_student_id_cell_feeds_every_assignment(path):
     cells = read_notebook(path).cells
     tagged = [c for c in cells if "student-id" in c.metadata.get("tags", [])]
     assert len(tagged) == 1
     (statement,) = ast.parse(tagged[0].source).body
     assert isinstance(statement, ast.Assign) and statement.value.value == "demo"
     code = "\n".join(c.source for c in cells if c.cell_type == "code")
-    assert f'rc.Variant(student_id, "{LESSON}")' in code
-    assert code.index("student_id =") < code.index("rc.Variant(")
+    assert f'rc.Assignment("{LESSON}", student_id)' in code
+    assert code.index("student_id =") < code.index("rc.Assignment(")
 
 
 def test_demo_numbers_by_hand_agree_with_the_programs():
@@ -240,6 +239,8 @@ def test_demo_numbers_by_hand_agree_with_the_programs():
     )
     assert program.duration == pytest.approx(n["answer_4"], rel=1e-12)
     assert sorted(n["own"])[0] < n["answer_4"] * (1 - 1e-3)
+    # the screened numbers: the slowest joint's own time is not the synchronized one
+    assert max(n["own"]) < n["answer_4"] * (1 - 5e-3)
 
 
 def test_demo_joint_speed_by_hand_agrees_with_the_simulation():

@@ -71,7 +71,7 @@ WRONG_ANSWERS: dict[str, dict[str, tuple[str, str]]] = {
         ),
         # the central difference where Simulink's backward one is asked
         "answer_5": (
-            "answer_5 = l3 * (np.cos(A * 1e-3 / T) - np.cos(A * (T - 1e-3) / T)) / 2e-3",
+            "answer_5 = l3 * (np.cos(A * dt5 / T) - np.cos(A * (T - dt5) / T)) / (2 * dt5)",
             "That is the central difference",
         ),
     },
@@ -119,21 +119,16 @@ def _with_student(path, student_id: str, folder) -> object:
 
 def _numbers_of(lesson: str, student: str = "demo") -> dict[str, str]:
     """A student's right answers as plain numbers (what a copied notebook would hold)."""
-    v = rc.Variant(student, lesson)
+    task = rc.Assignment(lesson, student)
     if lesson == DH:
-        l1, l2 = v.length("l1", 20, 60, step=5), v.length("l2", 15, 45, step=5)
-        h = v.length("h", 15, 40, step=5)
-        u, f = v.length("u", 20, 50, step=5), v.length("f", 20, 50, step=5)
+        l1, l2, h, u, f = (task[name] for name in ("l1", "l2", "h", "u", "f"))
         return {
             "answer_1": f'answer_1 = [("q1", 0, {l1}, 0), ("q2", 0, {l2}, 0)]',
             "answer_2": (
                 f'answer_2 = [("q1 + pi/2", {h}, 0, "pi/2"), ("q2", 0, {u}, 0), ("q3", 0, {f}, 0)]'
             ),
         }
-    l1, l2 = v.length("l1", 15, 30, step=5), v.length("l2", 20, 40, step=5)
-    l3, a = v.length("l3", 30, 50, step=5), v.length("A", 1.7, 2.5, step=0.1)
-    choices = ((1, [30, 45, 60, 90, 120]), (2, [-45, -30, 30, 45, 60]), (3, [30, 45, 60, 90]))
-    q = [v.angle(f"q{i}*", c) for i, c in choices]
+    l1, l2, l3, a, q = (task[name] for name in ("l1", "l2", "l3", "A", "q_star"))
     reach = l2 * np.cos(q[1]) + l3 * np.cos(q[1] + q[2])
     z = l1 - l2 * np.sin(q[1]) - l3 * np.sin(q[1] + q[2])
     p = [np.cos(q[0]) * reach, np.sin(q[0]) * reach, z]
@@ -186,7 +181,7 @@ NOTEBOOKS = [_exercises(n) for n in LESSONS] + [solutions_path(_exercises(n)) fo
 
 
 @pytest.mark.parametrize("path", NOTEBOOKS, ids=lambda p: f"{p.parent.parent.name}/{p.parent.name}")
-def test_one_student_id_cell_feeds_every_variant(path):
+def test_one_student_id_cell_feeds_every_assignment(path):
     """The contract the answer-key exporter relies on."""
     cells = read_notebook(path).cells
     tagged = [c for c in cells if "student-id" in c.metadata.get("tags", [])]
@@ -196,8 +191,8 @@ def test_one_student_id_cell_feeds_every_variant(path):
     assert statement.value.value == "demo"
     code = "\n".join(c.source for c in cells if c.cell_type == "code")
     lesson = path.parent.name
-    assert f'rc.Variant(student_id, "{lesson}")' in code
-    assert code.index("student_id =") < code.index("rc.Variant(")
+    assert f'rc.Assignment("{lesson}", student_id)' in code
+    assert code.index("student_id =") < code.index("rc.Assignment(")
 
 
 @pytest.mark.parametrize("lesson", LESSONS)

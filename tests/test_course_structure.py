@@ -7,9 +7,16 @@ Covers every lesson in ``course/`` (whoever wrote it); the conventions are in
 from __future__ import annotations
 
 import ast
+import contextlib
+import io
 import re
 
+import numpy as np
 import pytest
+
+from robotconf.grading import robotconf_calls
+from robotconf.teaching.exercises import registered
+from robotconf.teaching.reading._tolerance import ROUNDING_RULE
 
 from .course_support import (
     ANSWER_TAG,
@@ -24,6 +31,7 @@ from .course_support import (
 
 LESSONS = lesson_dirs()
 NOTEBOOKS = sorted(p for p in COURSE.rglob("*.ipynb") if ".ipynb_checkpoints" not in p.parts)
+EXERCISE_NOTEBOOKS = [p for p in NOTEBOOKS if p.name == "exercises.ipynb"]
 NETWORK_MODULES = {
     "aiohttp",
     "ftplib",
@@ -110,3 +118,63 @@ def test_exercise_cells_follow_the_conventions(lesson):
     for solution in solutions:
         assert RAISES_TAG not in solution.check_tags, solution.variable
         assert ANSWER_TAG not in solution.check_tags
+
+
+def _rule_sentence() -> str:
+    rule = ROUNDING_RULE
+    return rule[0].upper() + rule[1:]
+
+
+@pytest.mark.parametrize("path", EXERCISE_NOTEBOOKS, ids=_id)
+def test_the_how_to_cell_states_the_rounding_rule(path):
+    """Said once, the same words everywhere, before the first exercise."""
+    cells = read_notebook(path).cells
+    first_answer = next(i for i, c in enumerate(cells) if ANSWER_TAG in c.metadata.get("tags", []))
+    stated = [
+        i
+        for i, cell in enumerate(cells)
+        if cell.cell_type == "markdown" and _rule_sentence() in " ".join(cell.source.split())
+    ]
+    assert stated and stated[0] < first_answer, path
+
+
+def _setup_namespace(path) -> dict:
+    """The notebook's names after its setup cells (not the answers, checks or practice)."""
+    namespace: dict = {}
+    skip = {ANSWER_TAG, CHECK_TAG, "practice"}
+    # The setup cells set numpy's print options; they are put back after the run.
+    with np.printoptions(), contextlib.redirect_stdout(io.StringIO()):
+        for cell in read_notebook(path).cells:
+            if cell.cell_type == "code" and not skip & set(cell.metadata.get("tags", [])):
+                exec(compile(_code(cell.source), str(path), "exec"), namespace)  # our notebook
+    return namespace
+
+
+@pytest.mark.parametrize("lesson", LESSONS, ids=_id)
+def test_the_solutions_work_every_answer_by_hand(lesson):
+    """No answer of the key asks robotconf for itself: a graded copy would flag it."""
+    path = solutions_path(lesson / "exercises.ipynb")
+    namespace = _setup_namespace(path)
+    for exercise in exercise_cells(path):
+        calls = robotconf_calls(exercise.answer_source, namespace)
+        assert not calls, (exercise.variable, calls)
+
+
+@pytest.mark.parametrize("lesson", LESSONS, ids=_id)
+def test_every_exercise_with_drawn_numbers_is_checked_by_its_assignment(lesson):
+    """The notebook checks exercise k with ``task.assert_answer(k, answer_k)``."""
+    numbers = [e.number for e in registered(lesson.name)]
+    for path in (lesson / "exercises.ipynb", solutions_path(lesson / "exercises.ipynb")):
+        checks = {e.variable: e.check_source for e in exercise_cells(path)}
+        for k in numbers:
+            assert f"task.assert_answer({k}, answer_{k})" in checks[f"answer_{k}"], (path, k)
+
+
+@pytest.mark.parametrize("lesson", LESSONS, ids=_id)
+def test_practice_cells_are_no_exercise(lesson):
+    """Cells tagged ``practice`` (comparisons with robotconf) leave graded copies."""
+    for path in (lesson / "exercises.ipynb", solutions_path(lesson / "exercises.ipynb")):
+        for cell in read_notebook(path).cells:
+            tags = set(cell.metadata.get("tags", []))
+            if "practice" in tags:
+                assert not tags & {ANSWER_TAG, CHECK_TAG, "student-id"}, (path, tags)

@@ -2,10 +2,14 @@
 
 from __future__ import annotations
 
+import shutil
+import subprocess
+
 import numpy as np
 import pytest
 import sympy
 
+import robotconf as rc
 from robotconf import Module, Robot
 from robotconf.teaching import Derivation, derivation, format_number
 
@@ -124,7 +128,7 @@ def test_latex_rendering(paper_robot):
     assert source.startswith("\\begin{aligned}") and source.endswith("\\end{aligned}")
     assert source.count("\\begin{bmatrix}") == 7
     assert "\\cos{\\left(q_{1} \\right)}" in source
-    assert "M_{3} &= \\text{M2·A3}" in source
+    assert "M_{3} &= \\text{M2$\\cdot$A3}" in source
     assert "p_{EE}" in source
     assert steps._repr_latex_() == "$$" + source + "$$"
     assert steps["A1"]._repr_latex_().startswith("$$\\begin{aligned}")
@@ -187,3 +191,50 @@ def test_error_branches(paper_robot):
         derivation("RzRyRy")
     with pytest.raises(ValueError, match="name: unknown matrix name 'M7'; allowed: A1 … A3"):
         derivation(paper_robot, q=[0, 0, 0])["M7"]
+
+
+# -- LaTeX that pdflatex compiles -------------------------------------------------------
+
+
+def _paper_robots() -> list[rc.Robot]:
+    modules = rc.preset("paper")
+    dh = rc.Robot.from_dh(
+        [(0, 20, 0, -np.pi / 2, "R"), (0, 0, 30, 0, "R"), (0, 0, 40, 0, "R")], name="paper DH"
+    )
+    return [modules, dh]
+
+
+@pytest.mark.parametrize("symbolic", [False, True])
+def test_the_latex_of_the_paper_robot_is_plain_ascii(symbolic):
+    # pdflatex stops on U+1D40 (ᵀ) and has no Greek in text mode: every symbol of
+    # robotconf's own texts is written in LaTeX (inline math inside \text{}).
+    for robot in _paper_robots():
+        latex = rc.derivation(robot, symbolic=symbolic, lengths=symbolic).latex()
+        assert latex.isascii(), sorted({ch for ch in latex if not ch.isascii()})
+        assert "$^{\\mathsf T}$" in latex and "$\\cdot$" in latex
+        assert latex.count("$") % 2 == 0
+
+
+@pytest.mark.skipif(shutil.which("pdflatex") is None, reason="pdflatex is not installed")
+def test_the_latex_of_the_paper_robot_compiles(tmp_path):
+    body = "\n".join(
+        "\\[" + rc.derivation(robot, symbolic=symbolic, lengths=symbolic).latex() + "\\]"
+        for robot in _paper_robots()
+        for symbolic in (False, True)
+    )
+    source = tmp_path / "derivation.tex"
+    source.write_text(
+        "\\documentclass{article}\n\\usepackage{amsmath}\n\\begin{document}\n"
+        + body
+        + "\n\\end{document}\n",
+        encoding="utf-8",
+    )
+    done = subprocess.run(
+        ["pdflatex", "-interaction=nonstopmode", "-halt-on-error", source.name],
+        cwd=tmp_path,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert done.returncode == 0, done.stdout[-2000:]
+    assert (tmp_path / "derivation.pdf").stat().st_size > 1000

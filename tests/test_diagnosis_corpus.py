@@ -10,9 +10,16 @@ from __future__ import annotations
 
 import pytest
 
-from .diagnosis_corpus import CASES
+from .diagnosis_corpus import CASES, held_out_modules
 from .diagnosis_corpus.case import Case, right, wrong
-from .diagnosis_corpus.measure import Outcome, family_table, format_table, judge, primary_rate
+from .diagnosis_corpus.measure import (
+    Outcome,
+    family_table,
+    format_table,
+    judge,
+    lesson_group,
+    primary_rate,
+)
 
 
 @pytest.fixture(scope="module")
@@ -55,11 +62,38 @@ def test_every_must_case_gets_its_primary_diagnosis(outcomes):
 
 
 def test_primary_diagnosis_rate(outcomes):
-    rate = primary_rate(outcomes)
-    print(f"\nprimary diagnosis right for {rate:.1%} of the wrong answers")
-    print(format_table(family_table(outcomes)))
-    missed = [o for o in outcomes if not o.case.ok and o.grade != "right"]
-    assert rate >= 0.9, _listed(missed)
+    """In-sample (the cases the diagnoses were built against) and held-out, apart."""
+    inside = [o for o in outcomes if o.case.split == "in-sample"]
+    held = [o for o in outcomes if o.case.split == "held-out"]
+    late = [o for o in inside if lesson_group(o.case) == "lessons 9–12"]
+    for name, part in (("in-sample", inside), ("lessons 9–12", late), ("held-out", held)):
+        print(f"\n{name}: primary diagnosis right for {primary_rate(part):.1%}")
+        print(format_table(family_table(part)))
+    missed = [o for o in inside if not o.case.ok and o.grade != "right"]
+    assert primary_rate(inside) >= 0.95, _listed(missed)
+    assert primary_rate(late) >= 0.9, _listed([o for o in missed if o in late])
+    assert primary_rate(held) >= 0.85, _listed([o for o in held if o.grade != "right"])
+
+
+def test_lessons_9_to_12_are_in_the_corpus():
+    """Every exercise of lessons 9–12 has at least one right and one wrong answer."""
+    seen: dict[str, set[bool]] = {}
+    for case in CASES:
+        if lesson_group(case) == "lessons 9–12":
+            seen.setdefault(case.reference, set()).add(case.ok)
+    counts = {"L9": 4, "L10": 5, "L11": 7, "L12": 6}
+    expected = {f"{lesson}.ex{k}" for lesson, n in counts.items() for k in range(1, n + 1)}
+    assert set(seen) == expected
+    assert all(found == {True, False} for found in seen.values()), seen
+
+
+def test_a_held_out_family_is_a_file_of_its_own():
+    """``heldout_<name>.py`` modules are found by name; their cases count as held-out."""
+    names = held_out_modules()
+    assert names[0] == "blind" and all(n.startswith("heldout_") for n in names[1:])
+    held = {case.id.split("/")[0] for case in CASES if case.split == "held-out"}
+    assert {case.split for case in CASES} <= {"in-sample", "held-out"}
+    assert sum(case.split == "held-out" for case in CASES) >= 80 and held
 
 
 def test_family_table_counts_by_hand():

@@ -1,10 +1,19 @@
 """The course through nbgrader, end to end: release, generate, submit, autograde, feedback.
 
-Two assignments: lesson 01 of the course, and a one-exercise lab whose numbers depend on
-the student id (``tests/test_grading_release.py``'s ``variant_course``). Three students
-hand in lesson 01 — all right, typical mistakes, and a formula fitted to the visible
-check's sample points — and two hand in the lab, one copying the other's numbers. The
-expected points are counted by hand from the rules of docs/grading.md.
+Two assignments of the real course, with the points of course/kit/weights.md:
+
+- lesson 01 (matrices, no per-student numbers): all right; typical mistakes; a formula
+  fitted to the check's sample points (caught by the hidden recheck);
+- lesson 12 (numbers, profiles and sets, per-student numbers): a generated class — a
+  student with their own right answers, one with a typical single slip in every
+  exercise (2v/a, a triangle taken for a trapezoid, the cubic's factor, each joint its
+  own duration, moves counted from 1, x left out), a blank copy, one whose answer cells
+  ask robotconf for the answers, and one who copies another student's numbers.
+
+The rubric's promises are asserted on the gradebook: a named single slip earns a
+quarter to three quarters of the points; a shortcut cell is flagged for manual grading
+and earns no automatic credit; blank earns 0. A sweep over every exercise's slips
+without nbgrader is in tests/test_exercise_sweep.py.
 """
 
 from __future__ import annotations
@@ -15,15 +24,19 @@ import subprocess
 import sys
 from pathlib import Path
 
+import numpy as np
 import pytest
 
+import robotconf as rc
 from robotconf import teaching
-from robotconf.grading import find_exercises, read_notebook, release_course
+from robotconf.grading import FLAG, find_exercises, read_notebook, read_weights, release_course
 
-from .test_grading_release import COURSE, LESSON, VARIANT_LESSON, variant_course, variant_l2
+from .test_grading_release import COURSE, LESSON
 
 pytest.importorskip("nbgrader", reason="nbgrader is not installed (it is in the dev extra)")
 
+CLASS_LESSON = "12_trajectories"
+WEIGHTS = read_weights(COURSE / "kit" / "weights.md")
 A1 = "[[cos(q1), -sin(q1), 0, 30], [sin(q1), cos(q1), 0, 0], [0, 0, 1, 20], [0, 0, 0, 1]]"
 
 
@@ -44,21 +57,63 @@ LESSON_01 = {
     },
     "bob": {
         "answer_1": "[[0, 1, 0, 10], [0, 0, 1, 20], [1, 0, 0, 30], [0, 0, 0, 1]]",
-        # Turned the wrong way: -1 and 1 of the 4 graded entries (-1, 30, 1, 20) wrong.
+        # Turned the wrong way: a named slip, half of 2 points.
         "answer_2": "[[0, 1, 0, 30], [-1, 0, 0, 0], [0, 0, 1, 20], [0, 0, 0, 1]]",
-        # The y of the point rotated the wrong way: 1 of 3 graded entries wrong.
+        # The y of the point rotated the wrong way: 2 of 3 numbers right.
         "answer_3": "[30, -40, 20]",
     },
     "carol": {"answer_4": repr(_fitted_a1())},
 }
-#: Points per test cell, by hand: 4×4 matrices 2, the position 1; partial credit is
-#: points × (1 − wrong / graded), rounded to 0.01.
+#: Points per test cell, by hand from weights.md (1, 2, 1, 2) and the rubric.
 EXPECTED_01 = {
-    "alice": {"test_answer_1": 2, "test_answer_2": 2, "test_answer_3": 1, "test_answer_4": 2},
-    "bob": {"test_answer_1": 2, "test_answer_2": 1.0, "test_answer_3": 0.67, "test_answer_4": 0},
-    # Passes the visible check, fails the hidden one on entry (1,1): 2 × 5/6.
-    "carol": {"test_answer_1": 0, "test_answer_2": 0, "test_answer_3": 0, "test_answer_4": 1.67},
+    "alice": {"test_answer_1": 1, "test_answer_2": 2, "test_answer_3": 1, "test_answer_4": 2},
+    "bob": {"test_answer_1": 1, "test_answer_2": 1, "test_answer_3": 0.67, "test_answer_4": 0},
+    # Passes the visible check, fails the hidden one on entry (1,1) only: 5 of 6 numbers
+    # right, a wrong answer earns at most 3/4 of 2 points.
+    "carol": {"test_answer_1": 0, "test_answer_2": 0, "test_answer_3": 0, "test_answer_4": 1.5},
 }
+
+#: The slip each exercise of lesson 12 gets in the "slips" student's copy.
+SLIPS_12 = {
+    1: "accel_time_factor",  # 2v/a for the acceleration time
+    2: "triangle_as_trapezoid",  # the trapezoid's formulas for a short move
+    3: "cubic_quintic_swapped",  # the cubic's 3/2 for the quintic's 15/8
+    4: "not_synchronized",  # each joint its own duration
+    5: "counted_from_1",  # the moves counted from 1
+    6: "x_left_out",  # x* left out of v/(l1 l2 sin q2)·x
+}
+#: The class of lesson 12: student → (id typed, how the answers are made).
+CLASS_12 = {
+    "right": ("s101", "right"),
+    "slips": ("s103", "slips"),
+    "blank": ("s104", "blank"),
+    "shortcut": ("s105", "shortcut"),
+    "copier": ("s106", "copy s101"),
+}
+
+
+def _typed(value) -> str:
+    """A value as a student types it: plain numbers, lists, text."""
+    if isinstance(value, (str, dict)):
+        return repr(value)
+    return repr(np.asarray(value, dtype=float).tolist())
+
+
+def _answers_12(student_id: str, how: str) -> dict[str, str]:
+    """The answer cells' code of one student of the class."""
+    task = rc.Assignment(CLASS_LESSON, student_id)
+    numbers = [e.number for e in teaching.exercises.registered(CLASS_LESSON)]
+    if how == "blank":
+        return {}
+    if how == "shortcut":  # the answers asked of robotconf, in the answer cells
+        return {f"answer_{k}": f"answer_{k} = task.answer({k})" for k in numbers}
+    if how.startswith("copy "):
+        task = rc.Assignment(CLASS_LESSON, how.split()[1])
+    if how == "slips":
+        values = {k: task.exercise(k).slips(task.numbers)[SLIPS_12[k]] for k in numbers}
+    else:
+        values = {k: task.answer(k) for k in numbers}
+    return {f"answer_{k}": f"answer_{k} = {_typed(v)}" for k, v in values.items()}
 
 
 def _nbgrader(out: Path, *args: str) -> None:
@@ -70,7 +125,7 @@ def _nbgrader(out: Path, *args: str) -> None:
         env={**os.environ, "PATH": path},
         capture_output=True,
         text=True,
-        timeout=300,
+        timeout=600,
     )
     assert result.returncode == 0, result.stdout[-3000:] + result.stderr[-3000:]
 
@@ -90,61 +145,112 @@ def _submit(out: Path, assignment: str, student: str, sources: dict[str, str]) -
     target.write_text(json.dumps(notebook), encoding="utf-8")
 
 
-def _scores(out: Path, assignment: str) -> dict[str, dict[str, float]]:
+def _grades(out: Path, assignment: str) -> dict[str, dict[str, tuple[float, bool]]]:
+    """student → test cell → (score, needs manual grade)."""
     from nbgrader.api import Gradebook
 
-    scores = {}
+    grades = {}
     with Gradebook(f"sqlite:///{out / 'gradebook.db'}") as gradebook:
         for submission in gradebook.assignment_submissions(assignment):
             (notebook,) = submission.notebooks
-            scores[submission.student.id] = {g.name: g.score for g in notebook.grades}
-    return scores
+            grades[submission.student.id] = {
+                g.name: (g.score, bool(g.needs_manual_grade)) for g in notebook.grades
+            }
+    return grades
+
+
+def _scores(out: Path, assignment: str) -> dict[str, dict[str, float]]:
+    return {
+        student: {name: score for name, (score, _) in cells.items()}
+        for student, cells in _grades(out, assignment).items()
+    }
+
+
+def _points_12(number: int) -> float:
+    points = WEIGHTS.points_of(CLASS_LESSON, number)
+    assert points is not None
+    return points
 
 
 @pytest.fixture(scope="module")
 def graded(tmp_path_factory):
-    root = tmp_path_factory.mktemp("nbgrader_course")
-    out = root / "out"
-    release_course(out, COURSE, "01")
-    release_course(out, variant_course(root / "lab"), VARIANT_LESSON)
+    out = tmp_path_factory.mktemp("nbgrader_course") / "out"
+    release_course(out, COURSE, "01,12")
     _nbgrader(out, "generate_assignment", "*")
     for student, answers in LESSON_01.items():
         sources = {name: f"{name} = {value}" for name, value in answers.items()}
         _submit(out, LESSON, student, sources)
-    alice = f"answer_1 = [{variant_l2('s001') + 10}, 0, 0]"
-    _submit(out, VARIANT_LESSON, "alice", {"student_id": "s001", "answer_1": alice})
-    _submit(out, VARIANT_LESSON, "bob", {"student_id": "s002", "answer_1": alice})  # copied
+    for student, (student_id, how) in CLASS_12.items():
+        sources = {"student_id": student_id, **_answers_12(student_id, how)}
+        _submit(out, CLASS_LESSON, student, sources)
     _nbgrader(out, "autograde", "*")
-    _nbgrader(out, "generate_feedback", LESSON)
+    _nbgrader(out, "generate_feedback", "*")
     return out
 
 
-def test_the_student_version_has_stubs_and_no_hidden_test(graded):
-    notebook = read_notebook(graded / "release" / LESSON / f"{LESSON}.ipynb")
-    text = json.dumps(notebook)
-    assert "BEGIN SOLUTION" not in text and "recheck" not in text and "[30, 40, 20]" not in text
-    for exercise in find_exercises(notebook):
-        source = "".join(notebook["cells"][exercise.answer_index]["source"])
-        assert source.startswith(f"{exercise.variable} = None")
-        assert "NotImplementedError" not in source
+def _feedback(out: Path, student: str, assignment: str) -> str:
+    return (out / "feedback" / student / assignment / f"{assignment}.html").read_text("utf-8")
 
 
-def test_autograde_gives_full_partial_and_hidden_test_scores(graded):
+def test_the_student_version_has_stubs_and_no_check(graded):
+    for assignment in (LESSON, CLASS_LESSON):
+        notebook = read_notebook(graded / "release" / assignment / f"{assignment}.ipynb")
+        text = json.dumps(notebook)
+        assert "BEGIN SOLUTION" not in text and "recheck" not in text
+        assert "assert_answer" not in text and "Credit(" not in text
+        assert "How this copy is graded" in text
+        for exercise in find_exercises(notebook):
+            source = "".join(notebook["cells"][exercise.answer_index]["source"])
+            assert source.startswith(f"{exercise.variable} = None")
+    assert "[30, 40, 20]" not in json.dumps(
+        read_notebook(graded / "release" / LESSON / f"{LESSON}.ipynb")
+    )
+
+
+def test_lesson_01_gets_full_partial_and_hidden_test_scores(graded):
     scores = _scores(graded, LESSON)
     assert scores == EXPECTED_01  # the scores are the printed numbers, 0.01 steps
-    assert sum(scores["alice"].values()) == 7
+    assert sum(scores["alice"].values()) == 6
 
 
-def test_per_student_numbers_are_graded_against_each_students_own(graded):
-    assert variant_l2("s001") != variant_l2("s002")
-    # Bob's x is Alice's l2 + 10, not his own: the one graded entry is wrong.
-    assert _scores(graded, VARIANT_LESSON) == {
-        "alice": {"test_answer_1": 1.0},
-        "bob": {"test_answer_1": 0.0},
-    }
+def test_right_answers_earn_every_point(graded):
+    scores = _scores(graded, CLASS_LESSON)
+    full = {f"test_answer_{k}": _points_12(k) for k in SLIPS_12}
+    assert scores["right"] == full
 
 
-def test_feedback_shows_the_hints_and_the_partial_credit(graded):
-    html = (graded / "feedback" / "bob" / LESSON / f"{LESSON}.html").read_text("utf-8")
-    assert "Partial credit: 0.67 of 1 points" in html
+def test_a_named_single_slip_earns_a_quarter_to_three_quarters(graded):
+    scores = _scores(graded, CLASS_LESSON)["slips"]
+    for k in SLIPS_12:
+        share = scores[f"test_answer_{k}"] / _points_12(k)
+        assert 0.25 <= share <= 0.75, (k, SLIPS_12[k], share)
+    html = _feedback(graded, "slips", CLASS_LESSON)
+    assert html.count("the checker names one slip of a right method") >= 5
+
+
+def test_a_blank_copy_earns_nothing(graded):
+    assert set(_scores(graded, CLASS_LESSON)["blank"].values()) == {0}
+    assert "Exercise 1 is not answered yet" in _feedback(graded, "blank", CLASS_LESSON)
+
+
+def test_answers_asked_of_robotconf_are_flagged_and_earn_no_automatic_credit(graded):
+    cells = _grades(graded, CLASS_LESSON)["shortcut"]
+    assert cells == {f"test_answer_{k}": (0, True) for k in SLIPS_12}
+    html = _feedback(graded, "shortcut", CLASS_LESSON)
+    assert FLAG in html and "task.answer" in html
+    # nobody else is sent to manual grading
+    others = _grades(graded, CLASS_LESSON)
+    assert not any(flag for s, c in others.items() if s != "shortcut" for _, flag in c.values())
+
+
+def test_each_student_is_graded_against_their_own_numbers(graded):
+    scores = _scores(graded, CLASS_LESSON)
+    copied, own = sum(scores["copier"].values()), sum(scores["right"].values())
+    assert copied < own / 2, scores["copier"]
+
+
+def test_feedback_says_what_cost_the_points(graded):
+    html = _feedback(graded, "bob", LESSON)
+    assert "Credit: 0.67 points of 1 point: 2 of the 3 numbers that count are right" in html
+    assert "the checker names one slip of a right method" in html
     assert "Exercise 4 is not answered yet" in html

@@ -155,13 +155,16 @@ def test_check_cells_are_graded_tests_with_points(released):
         assert (meta["grade"], meta["solution"], meta["locked"]) == (True, False, True)
         assert meta["grade_id"] == f"test_{exercise.variable}"
         assert "raises-exception" in cell_tags(cell)
-        source = cell_source(cell)
-        assert source.startswith("from robotconf.grading import Credit")
-        assert source.rstrip().endswith("credit.score")
+        source = cell_source(cell).splitlines()
+        assert source[0].startswith(f"{exercise.variable}  # your answer, worth")
+        assert source[1] == "### BEGIN HIDDEN TESTS"
+        assert source[2] == "from robotconf.grading import Credit"
+        assert f"    credit.own_work({exercise.variable!r})" in source
+        assert source[-2:] == ["credit.score", "### END HIDDEN TESTS"]
         points[exercise.variable] = meta["points"]
-    # 4×4 matrices are worth 2 (exercises 1, 2, 4), the position 1.
-    assert points == {"answer_1": 2, "answer_2": 2, "answer_3": 1, "answer_4": 2}
-    assert release.points(LESSON) == 7
+    # course/kit/weights.md: the axes 1, the turned frame 2, the point 1, the symbolic A1 2.
+    assert points == {"answer_1": 1, "answer_2": 2, "answer_3": 1, "answer_4": 2}
+    assert release.points(LESSON) == 6
     # Only exercise 4 is symbolic (A1 in q1): only it has a hidden test.
     hidden = [e.variable for e in release.exercises if e.hidden]
     assert hidden == ["answer_4"]
@@ -182,6 +185,11 @@ def test_grade_ids_are_unique_and_every_other_cell_is_locked(released):
     # The text is the students': their title has no "(solutions)".
     title = cell_source(notebook["cells"][0]).splitlines()[0]
     assert title == "# Lesson 1 — Homogeneous transforms — exercises"
+    # Right after it, how the copy is graded: points, rounding, the rubric, own work.
+    intro = cell_source(notebook["cells"][1])
+    assert intro.startswith("### How this copy is graded")
+    assert "6 in all (exercise 1: 1, exercise 2: 2, exercise 3: 1, exercise 4: 2)" in intro
+    assert "3 significant digits" in intro and "calls robotconf" in intro
 
 
 def _student_version(notebook: dict, stub: str) -> dict:
@@ -213,6 +221,8 @@ def test_the_student_version_has_no_solution(released):
         solution = cell_source(solutions["cells"][exercise.answer_index]).split("=", 1)[1]
         assert solution.strip() not in text
     assert "BEGIN" not in text and "recheck" not in text
+    # No check is left in the students' copy: no expected value, no code computing one.
+    assert "assert_matrix" not in text and "expected_1" not in text and "import Credit" not in text
     for exercise in find_exercises(student):
         body = ast.parse(cell_source(student["cells"][exercise.answer_index])).body
         assert len(body) == 1 and body[0].value.value is None
@@ -228,8 +238,11 @@ def test_the_nbgrader_config_names_the_course_and_assignments(released):
     assert ast.literal_eval(values["c.CourseDirectory.course_id"]) == "robotconf"
     assert ast.literal_eval(values["ASSIGNMENTS"]) == [LESSON]
     assert ast.literal_eval(values["c.Execute.timeout"]) == 120
+    # autograde marks exercises flagged for manual grading, right after saving the scores
+    config = (out / "nbgrader_config.py").read_text(encoding="utf-8")
+    assert "robotconf.grading.nbgrader_flags.FlagForManualGrading" in config
     readme = (out / "README.md").read_text(encoding="utf-8")
-    for step in ("generate_assignment", "autograde", "generate_feedback", "| 7 |"):
+    for step in ("generate_assignment", "autograde", "generate_feedback", "| 6 |"):
         assert step in readme
 
 
@@ -252,7 +265,7 @@ def test_the_released_source_earns_full_points_when_run(released):
             assert not [o for o in cell.outputs if o.output_type == "error"]
             scores[meta["grade_id"]] = float(results[-1].data["text/plain"])
     assert scores == {
-        "test_answer_1": 2.0,
+        "test_answer_1": 1.0,
         "test_answer_2": 2.0,
         "test_answer_3": 1.0,
         "test_answer_4": 2.0,
@@ -265,13 +278,13 @@ def test_a_second_release_keeps_the_first_and_an_instructors_config(released, tm
     (out / "nbgrader_config.py").write_text("c = get_config()  # my own\n", encoding="utf-8")
     release = release_course(out, variant_course(tmp_path), VARIANT_LESSON)
     readme = (out / "README.md").read_text(encoding="utf-8")  # still the release's: rewritten
-    assert f"| `{LESSON}` | 7 |" in readme and f"| `{VARIANT_LESSON}` | 1 |" in readme
+    assert f"| `{LESSON}` | 6 |" in readme and f"| `{VARIANT_LESSON}` | 1 |" in readme
     config = (out / "nbgrader_config.py").read_text(encoding="utf-8")
     assert config == "c = get_config()  # my own\n"
     assert [note for note in release.notes if "nbgrader_config.py" in note]
     # The student-id cell stays the student's to edit.
     notebook = read_notebook(out / "source" / VARIANT_LESSON / f"{VARIANT_LESSON}.ipynb")
-    id_cell = notebook["cells"][1]
+    id_cell = notebook["cells"][2]  # after the title and how the copy is graded
     assert "nbgrader" not in id_cell["metadata"] and id_cell["metadata"]["deletable"] is False
     assert cell_source(notebook["cells"][0]) == "# Lab"
 
@@ -286,7 +299,7 @@ def key01():
 
 def test_key_values_are_the_checks_expected_values(key01):
     (lesson,) = key01.lessons
-    assert lesson.lesson == LESSON and lesson.student_id is None and lesson.points == 7
+    assert lesson.lesson == LESSON and lesson.student_id is None and lesson.points == 6
     by = {e.variable: e for e in lesson.exercises}
     # Exercise 1: axes x1 = (0,0,1), y1 = (1,0,0), z1 = (0,1,0) as columns, origin (10,20,30).
     assert by["answer_1"].expected["values"] == [
@@ -311,7 +324,7 @@ def test_key_values_are_the_checks_expected_values(key01):
     assert symbolic["values"] is None and symbolic["symbols"] == ["q1"]
     assert symbolic["entries"][0] == ["cos(q1)", "-sin(q1)", "0", "30"]
     assert symbolic["latex"].startswith(r"\begin{bmatrix}\cos{\left(q_{1} \right)}")
-    assert [e.points for e in lesson.exercises] == [2, 2, 1, 2]
+    assert [e.points for e in lesson.exercises] == [1, 2, 1, 2]
     assert all(e.error == "" and e.expected_from == "check" for e in lesson.exercises)
 
 
@@ -319,7 +332,7 @@ def test_key_files_in_markdown_and_json(key01, tmp_path):
     from robotconf.grading import write_answer_key
 
     text = write_answer_key(tmp_path / "key.md", key01).read_text(encoding="utf-8")
-    assert "## 01_homogeneous_transforms (7 points)" in text
+    assert "## 01_homogeneous_transforms (6 points)" in text
     assert "[[cos(q1), -sin(q1), 0, 30]," in text
     assert "$$\n\\begin{bmatrix}" in text
     data = json.loads(write_answer_key(tmp_path / "key.json", key01).read_text("utf-8"))

@@ -205,7 +205,7 @@ def test_long_chain_report_finishes_quickly_with_the_symbolic_note(tmp_path, n):
     assert "(symbolic: chain too long)" in result.stdout
     matrices = (out / "matrices.txt").read_text(encoding="utf-8")
     assert "No symbolic matrices: this chain is too long" in matrices
-    assert "rc.derivation(robot, symbolic=True)" in matrices
+    assert "rc.derivation(robot, symbolic=True, allow_slow=True)" in matrices
     assert "Symbolic (q1" not in matrices and "l1" not in matrices
     report = (out / "report.md").read_text(encoding="utf-8")
     assert "No symbolic matrices: this chain is too long" in report
@@ -428,3 +428,15 @@ def test_the_longest_chain_that_fits_derives_in_seconds():
     start = time.perf_counter()
     rc.derivation(robot, symbolic=True, lengths=True)
     assert time.perf_counter() - start < 15  # about 1.5 s; generous for a loaded machine
+
+
+def test_a_chain_over_the_limit_is_refused_at_once_with_the_reports_sentence():
+    robot = rc.Robot([rc.Module(kind, a=(1, 0.5, 2)) for kind in ("Rz", "Ry", "Rx") * 4])
+    start = time.perf_counter()
+    with pytest.raises(rc.InvalidInputError) as refused:
+        rc.derivation(robot, symbolic=True, lengths=True)
+    assert time.perf_counter() - start < 1
+    assert refused.value.field == "symbolic"
+    assert str(refused.value) == "symbolic: no symbolic matrices: " + rc.teaching.SYMBOLIC_TOO_LONG
+    assert _steps.SYMBOLIC_TOO_LONG == "No symbolic matrices: " + rc.teaching.SYMBOLIC_TOO_LONG
+    assert "allow_slow=True" in str(refused.value)

@@ -6,10 +6,16 @@ written as nbformat-4 JSON; running them needs nbclient and ipykernel (the ``lab
 extra), imported only when a notebook runs.
 
 In a graded notebook
-    :class:`Credit` (a test cell's points: full, partial per entry, or none)
-Points and partial credit
-    :func:`points_for`, :func:`answer_credit`, :func:`credit_counts`,
+    :class:`Credit` (a test cell's points by the rubric; ``credit.own_work`` flags an
+    answer cell that asks robotconf for its answer)
+The rubric: credit for the right method
+    :class:`Rubric`, :func:`award`, :class:`Award`, :func:`names_a_slip`,
+    :data:`SLIP_WORDS`, :func:`points_for`, :func:`credit_counts`,
     :func:`graded_entries`
+The course's weighting table (course/kit/weights.md)
+    :func:`read_weights`, :func:`find_weights`, :class:`Weights`
+Answers that ask robotconf for themselves
+    :func:`robotconf_calls`, :data:`FLAG`
 Release for nbgrader
     :func:`release_course`, :class:`Release`, :class:`ReleasedExercise`,
     :func:`source_notebook`
@@ -29,20 +35,45 @@ The command line
 
 from ._answer_key import AnswerKey, KeyExercise, KeyLesson, answer_key, write_answer_key
 from ._command import add_course_parser, run_course
-from ._credit import Credit
 from ._execute import ExerciseRun, SolutionsRun, run_solutions
 from ._notebook_cells import Exercise, find_exercises, read_notebook
-from ._points import answer_credit, credit_counts, graded_entries, points_for
 from ._release import Release, ReleasedExercise, release_course, source_notebook
+from .rubric import (
+    FLAG,
+    SLIP_WORDS,
+    Award,
+    Credit,
+    Rubric,
+    Weights,
+    award,
+    credit_counts,
+    find_weights,
+    graded_entries,
+    names_a_slip,
+    points_for,
+    read_weights,
+    robotconf_calls,
+)
 
 __all__ = [
     # in a graded notebook
     "Credit",
-    # points and partial credit
+    # the rubric
+    "Rubric",
+    "award",
+    "Award",
+    "names_a_slip",
+    "SLIP_WORDS",
     "points_for",
-    "answer_credit",
     "credit_counts",
     "graded_entries",
+    # the weighting table
+    "read_weights",
+    "find_weights",
+    "Weights",
+    # answers that ask robotconf for themselves
+    "robotconf_calls",
+    "FLAG",
     # release for nbgrader
     "release_course",
     "Release",

@@ -19,7 +19,8 @@ from typing import Any
 from .._errors import InvalidInputError
 from ._course import find_course, select_lessons, solutions_notebook
 from ._execute import CELL_TIMEOUT, check_student_id, run_solutions
-from ._points import points_for
+from .rubric._points import points_for
+from .rubric._weights import find_weights
 
 __all__ = ["AnswerKey", "KeyExercise", "KeyLesson", "answer_key", "key_path", "write_answer_key"]
 
@@ -34,7 +35,7 @@ class KeyExercise:
     ----------
     number : int
     variable : str
-    points : int
+    points : float
     kind : str or None
         ``"matrix"``, ``"vector"``, ``"value"``, ``"angle"``, ``"set"``, ``"interval"``,
         ``"dh_table"``, or ``None`` when the check called no checker.
@@ -51,7 +52,7 @@ class KeyExercise:
 
     number: int
     variable: str
-    points: int
+    points: float
     kind: str | None
     expected: dict[str, Any] | None
     expected_from: str | None
@@ -79,7 +80,7 @@ class KeyLesson:
     exercises: list[KeyExercise]
 
     @property
-    def points(self) -> int:
+    def points(self) -> float:
         """The lesson's total points."""
         return sum(e.points for e in self.exercises)
 
@@ -114,6 +115,12 @@ class AnswerKey:
         from ._key_markdown import key_markdown
 
         return key_markdown(self)
+
+
+def _points(weights: Any, lesson: str, number: int, kind: Any, shape: Any) -> float:
+    """An exercise's points: the weighting table's, else the default by kind and shape."""
+    listed = weights.points_of(lesson, number) if weights is not None else None
+    return listed if listed is not None else points_for(kind, shape)
 
 
 def answer_key(
@@ -154,13 +161,14 @@ def answer_key(
     >>> key = answer_key(lessons="01")  # runs the lesson's solutions notebook
     >>> exercise = key.lessons[0].exercises[2]  # where is the point (40, 0, 0) of [T1]?
     >>> exercise.points, exercise.expected["name"], exercise.expected["values"]
-    (1, 'p_EE', [[30.0], [40.0], [20.0], [1.0]])
+    (1.0, 'p_EE', [[30.0], [40.0], [20.0], [1.0]])
     """
     say = say or (lambda _: None)
     if student is not None:
         student = check_student_id(student)
     folder = find_course(course)
     names = select_lessons(folder, lessons)
+    weights = find_weights(folder)
     keyed: list[KeyLesson] = []
     for number, lesson in enumerate(names, 1):
         path = solutions_notebook(folder, lesson)
@@ -169,7 +177,7 @@ def answer_key(
             KeyExercise(
                 r.exercise.number,
                 r.exercise.variable,
-                points_for(r.kind, r.shape),
+                _points(weights, lesson, r.exercise.number, r.kind, r.shape),
                 r.kind,
                 r.expected,
                 r.expected_from,

@@ -1,4 +1,5 @@
-"""``robotconf course …``: the instructor's commands (release for nbgrader, answer key).
+"""``robotconf course …``: the instructor's commands (release for nbgrader, the rubric,
+quizzes and the exam, the answer key).
 
 ``cli.py`` registers the subcommand with :func:`add_course_parser` and hands the parsed
 arguments to :func:`run_course`; errors are ``InvalidInputError`` (a ``ValueError``) or
@@ -22,10 +23,30 @@ partial credit and hidden tests), OUT/nbgrader_config.py and OUT/README.md. The
 solutions run first and must pass their own checks. OUT/source holds the solutions: it
 is the instructor's copy; `nbgrader generate_assignment` makes the students' copies."""
 
+_RUBRIC = """\
+Show a lesson's rubric: every exercise's points and the share a named slip earns (from
+the course's kit/weights.md), the kind of answer its check judges, whether the right
+numbers of a wrong answer count, and the slips the checker names. Markdown on standard
+output."""
+
 _KEY = """\
 Write the answer key (every exercise's expected value, formulas also as LaTeX) as
 Markdown (.md) or JSON (.json), by running the solutions notebooks. Lessons with
 per-student numbers (a cell tagged student-id) run with --student's id."""
+
+
+_QUIZ = """\
+Write the quizzes of the course's kit/quizzes.md (a few exercises per lesson) as a course
+folder: OUT/NN_quiz_name/exercises.ipynb, OUT/solutions/…, OUT/kit/weights.md. Every
+item has the student's own numbers, drawn under --draw (other numbers than the
+homework's), and the exercise's own check. Hand the folder out for practice, or release
+it: robotconf course release NBGRADER/ --course OUT/."""
+
+_EXAM = """\
+Write the exam of the course's kit/exam_bank.md as a course folder: OUT/90_exam/
+exercises.ipynb, OUT/solutions/…, OUT/kit/weights.md. Each slot offers one or more
+exercises; every student gets one per slot, with their own numbers, drawn from their id
+and --draw. Release it for nbgrader: robotconf course release NBGRADER/ --course OUT/."""
 
 
 def _common(parser: argparse.ArgumentParser) -> None:
@@ -46,7 +67,7 @@ def _common(parser: argparse.ArgumentParser) -> None:
 
 
 def add_course_parser(commands: Any) -> None:
-    """Add ``course release`` and ``course key`` to the ``robotconf`` command.
+    """Add ``course release``, ``rubric``, ``quiz``, ``exam`` and ``key`` to ``robotconf``.
 
     Parameters
     ----------
@@ -63,8 +84,10 @@ def add_course_parser(commands: Any) -> None:
     """
     course = commands.add_parser(
         "course",
-        help="instructor tools: the course for nbgrader, the answer key",
-        description="Instructor tools for the course: an nbgrader release and the answer key.",
+        help="instructor tools: the course for nbgrader, its rubric, the answer key",
+        description=(
+            "Instructor tools for the course: an nbgrader release, the rubric and the answer key."
+        ),
     )
     actions = course.add_subparsers(dest="course_command", required=True, metavar="ACTION")
     release = actions.add_parser(
@@ -75,6 +98,22 @@ def add_course_parser(commands: Any) -> None:
         "--course-id", default="robotconf", help="nbgrader's course id (default robotconf)"
     )
     _common(release)
+    rubric = actions.add_parser(
+        "rubric", help="show a lesson's rubric (points, slips, shares)", description=_RUBRIC
+    )
+    rubric.add_argument("lesson", metavar="LESSON", help="a lesson number or folder name")
+    rubric.add_argument(
+        "--course", metavar="COURSE_DIR", help="the course folder (default: ./course)"
+    )
+    quiz = actions.add_parser("quiz", help="write the quizzes (a course folder)", description=_QUIZ)
+    quiz.add_argument("out", metavar="OUT/", help="the quizzes' course folder (created)")
+    quiz.add_argument("--course", metavar="COURSE_DIR", help="the course (default ./course)")
+    quiz.add_argument("--lessons", metavar="LIST", help="lessons by number, e.g. 11,12")
+    quiz.add_argument("--draw", default="quiz", help="the numbers' name (default quiz)")
+    exam = actions.add_parser("exam", help="write the exam (a course folder)", description=_EXAM)
+    exam.add_argument("out", metavar="OUT/", help="the exam's course folder (created)")
+    exam.add_argument("--course", metavar="COURSE_DIR", help="the course (default ./course)")
+    exam.add_argument("--draw", default="exam", help="the exam's name, e.g. exam-2026")
     key = actions.add_parser("key", help="write the answer key", description=_KEY)
     key.add_argument("out", metavar="OUT.md|OUT.json", help="the key file")
     key.add_argument("--student", metavar="ID", help="a student id, for per-student lessons")
@@ -82,7 +121,7 @@ def add_course_parser(commands: Any) -> None:
 
 
 def run_course(args: argparse.Namespace, say: Callable[[str], None] = print) -> int:
-    """Run ``robotconf course release|key`` with parsed arguments; returns 0.
+    """Run ``robotconf course release|rubric|quiz|exam|key`` with parsed arguments.
 
     Raises
     ------
@@ -91,7 +130,24 @@ def run_course(args: argparse.Namespace, say: Callable[[str], None] = print) -> 
     """
     from ._answer_key import answer_key, key_path, write_answer_key
     from ._release import release_course
+    from .rubric._rubric_table import rubric_text
 
+    if args.course_command == "rubric":
+        say(rubric_text(args.lesson, args.course).rstrip("\n"))
+        return 0
+    if args.course_command in ("quiz", "exam"):
+        from ._quiz import write_exam_course, write_quiz_course
+
+        if args.course_command == "quiz":
+            lessons = args.lessons.split(",") if args.lessons else None
+            names = write_quiz_course(args.out, args.course, lessons, args.draw)
+        else:
+            names = [write_exam_course(args.out, args.course, args.draw)]
+        say(
+            f"wrote {args.out}: {', '.join(names)} (release: robotconf course release "
+            f"NBGRADER/ --course {args.out})"
+        )
+        return 0
     if args.timeout < 1:
         from .._errors import InvalidInputError
 

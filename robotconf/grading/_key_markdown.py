@@ -97,7 +97,7 @@ def _what(described: dict[str, Any]) -> str:
 def _exercise(exercise: KeyExercise) -> list[str]:
     point_word = "point" if exercise.points == 1 else "points"
     lines = [
-        f"### Exercise {exercise.number}: `{exercise.variable}` ({exercise.points} {point_word})",
+        f"### Exercise {exercise.number}: `{exercise.variable}` ({exercise.points:g} {point_word})",
         "",
     ]
     described = exercise.expected
@@ -149,11 +149,11 @@ def key_markdown(key: AnswerKey) -> str:
         "",
         f"From the solutions notebooks in `{_text(key.course)}`: each expected value is what "
         "the exercise's check compares a student's answer with. "
-        f"{len(key.lessons)} lessons, {total} points. Keep this file from students.",
+        f"{len(key.lessons)} lessons, {total:g} points. Keep this file from students.",
         "",
     ]
     for lesson in key.lessons:
-        lines += [f"## {lesson.lesson} ({lesson.points} points)", ""]
+        lines += [f"## {lesson.lesson} ({lesson.points:g} points)", ""]
         if lesson.student_id is not None:
             lines += [f"Student id: **{_text(lesson.student_id)}**", ""]
         for exercise in lesson.exercises:

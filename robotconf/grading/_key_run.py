@@ -16,7 +16,7 @@ from typing import Any
 import numpy as np
 
 from ..teaching import as_expected, format_number, simplify_matrix
-from ._recorder import CheckCall, CheckRecorder
+from .rubric._recorder import CheckCall, CheckRecorder
 
 __all__ = ["KEY_MARKER", "KeyRun", "describe_call", "describe_reference", "describe_value"]
 
@@ -133,7 +133,7 @@ def describe_call(call: CheckCall) -> dict[str, Any] | None:
 
     Examples
     --------
-    >>> from robotconf.grading._recorder import CheckRecorder
+    >>> from robotconf.grading.rubric._recorder import CheckRecorder
     >>> from robotconf import teaching
     >>> with CheckRecorder() as recorder:
     ...     _ = teaching.check_vector([0, 35, -40], [0, 35, -40], name="the velocity")

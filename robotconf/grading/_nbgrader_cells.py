@@ -17,6 +17,7 @@ import textwrap
 from typing import Any
 
 from .._errors import InvalidInputError
+from .rubric._rubric import DEFAULT_CAP, DEFAULT_SHARE, Rubric
 
 __all__ = [
     "BEGIN_HIDDEN",
@@ -29,6 +30,7 @@ __all__ = [
     "grade_id",
     "nbgrader_metadata",
     "autograder_source",
+    "credit_arguments",
 ]
 
 SCHEMA_VERSION = 3
@@ -124,58 +126,85 @@ def _assert_calls(check: str) -> int:
     return count
 
 
-def autograder_source(
-    check: str, points: float, *, hidden: bool, where: str = "check cell"
-) -> tuple[str, bool]:
-    """A check cell as an nbgrader autograder test cell.
+def credit_arguments(rubric: Rubric, several: bool) -> str:
+    """The arguments of ``Credit(…)`` for one exercise's rubric (defaults left out).
 
-    The check runs inside ``with Credit(points) as credit:``
-    (:class:`~robotconf.grading.Credit`), and the cell ends with ``credit.score``, the
-    number nbgrader reads. Partial credit per entry is on when the check makes exactly
-    one ``assert_*`` call (``Credit(points, partial=False)`` otherwise). ``hidden`` adds
-    the hidden test ``credit.recheck()``. A check that cannot be indented without
-    changing it (a multi-line string, IPython syntax) stays as it is: whole points, no
-    hidden test.
+    >>> credit_arguments(Rubric(2, slips={"too_rounded": 0.75}), several=False)
+    "2, slips={'too_rounded': 0.75}"
+    >>> credit_arguments(Rubric(1.5, share=0.4), several=True)
+    '1.5, share=0.4, several=True'
+    """
+    parts = [f"{rubric.points:g}"]
+    if rubric.share != DEFAULT_SHARE:
+        parts.append(f"share={rubric.share:g}")
+    if rubric.slips:
+        parts.append(f"slips={dict(sorted(rubric.slips.items()))!r}")
+    if rubric.cap != DEFAULT_CAP:
+        parts.append(f"cap={rubric.cap:g}")
+    if several:
+        parts.append("several=True")
+    return ", ".join(parts)
+
+
+def autograder_source(
+    check: str,
+    rubric: Rubric,
+    *,
+    variable: str,
+    recheck: bool,
+    where: str = "check cell",
+) -> tuple[str, bool]:
+    """A check cell as an nbgrader autograder test cell of a graded copy.
+
+    The whole check is a hidden test: the students' copy keeps one line that shows their
+    answer back, so the expected values (and the code that computes them) are not in it; ``nbgrader
+    autograde`` puts the check back. It runs inside ``with Credit(…) as credit:``
+    (:class:`~robotconf.grading.Credit`, with the exercise's rubric), first flagging an
+    answer cell that asks robotconf for its answer (``credit.own_work``), and the cell
+    ends with ``credit.score``, the number nbgrader reads. ``recheck`` adds
+    ``credit.recheck()`` (a symbolic answer at 32 other values of its symbols). A check
+    that cannot be indented without changing it (a multi-line string, IPython syntax) is
+    hidden as it is: whole points.
 
     Returns
     -------
     (str, bool)
-        The source, and whether partial credit is on.
+        The source, and whether the rubric's credit applies.
 
     Examples
     --------
     >>> check = "rc.assert_matrix(answer_1, expected_1)"
-    >>> source, partial = autograder_source(check, 2, hidden=False)
+    >>> source, credit = autograder_source(check, Rubric(2), variable="answer_1", recheck=False)
     >>> print(source)
+    answer_1  # your answer, worth 2 points: checked when your notebook is graded
+    ### BEGIN HIDDEN TESTS
     from robotconf.grading import Credit
     <BLANKLINE>
-    with Credit(2) as credit:  # partial credit per entry (docs/grading.md)
+    with Credit(2) as credit:
+        credit.own_work('answer_1')
         rc.assert_matrix(answer_1, expected_1)
     credit.score
-    >>> autograder_source("%time rc.assert_matrix(answer_1, expected_1)", 1, hidden=True)
-    ('%time rc.assert_matrix(answer_1, expected_1)', False)
+    ### END HIDDEN TESTS
     """
     _refuse_markers(check, where)
     check = check.strip("\n")
-    body = textwrap.indent(check, "    ")
-    try:
-        partial = _assert_calls(check) == 1
-    except SyntaxError:
-        return check, False
-    opening = (
-        f"with Credit({points:g}) as credit:  # partial credit per entry (docs/grading.md)"
-        if partial
-        else f"with Credit({points:g}, partial=False) as credit:  # whole points only"
+    points = rubric.points
+    # The students' copy keeps one line: their answer, shown back to them.
+    comment = (
+        f"{variable}  # your answer, worth {points:g} point{'' if points == 1 else 's'}: "
+        "checked when your notebook is graded"
     )
-    lines = ["from robotconf.grading import Credit", "", opening, body]
-    if hidden:
-        lines += [
-            f"    {BEGIN_HIDDEN}",
-            "    credit.recheck()  # the same check at 32 other values of the symbols",
-            f"    {END_HIDDEN}",
-        ]
-    lines.append("credit.score")
-    wrapped = "\n".join(lines)
-    if not _same_code(check, "\n".join([*lines[:4], lines[-1]])):
-        return check, False
-    return wrapped, partial
+    try:
+        several = _assert_calls(check) != 1
+    except SyntaxError:
+        return "\n".join([comment, BEGIN_HIDDEN, check, END_HIDDEN]), False
+    opening = f"with Credit({credit_arguments(rubric, several)}) as credit:"
+    body = textwrap.indent(check, "    ")
+    inner = ["from robotconf.grading import Credit", "", opening, body]
+    if recheck:
+        inner.append("    credit.recheck()  # the same check at 32 other values of the symbols")
+    inner.append("credit.score")
+    if not _same_code(check, "\n".join([*inner[:4], inner[-1]])):
+        return "\n".join([comment, BEGIN_HIDDEN, check, END_HIDDEN]), False
+    inner.insert(3, f"    credit.own_work({variable!r})")
+    return "\n".join([comment, BEGIN_HIDDEN, *inner, END_HIDDEN]), True

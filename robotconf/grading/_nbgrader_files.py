@@ -11,9 +11,9 @@ import json
 from collections.abc import Mapping
 from pathlib import Path
 
-from ._credit import HIDDEN_SAMPLES
 from ._nbgrader_cells import CODE_STUB
-from ._points import POINTS_PER_EXERCISE, POINTS_PER_MATRIX
+from .rubric._credit import HIDDEN_SAMPLES
+from .rubric._points import POINTS_PER_EXERCISE, POINTS_PER_MATRIX
 
 __all__ = ["WRITTEN_BY", "config_text", "readme_text", "write_if_ours"]
 
@@ -21,6 +21,8 @@ __all__ = ["WRITTEN_BY", "config_text", "readme_text", "write_if_ours"]
 WRITTEN_BY = "Written by `robotconf course release`"
 #: Seconds nbgrader gives each cell (its default, 30 s, is tight for a busy machine).
 EXECUTE_TIMEOUT = 120
+#: The autograde step that marks flagged exercises for manual grading.
+FLAG_STEP = "robotconf.grading.nbgrader_flags.FlagForManualGrading"
 
 
 def config_text(course_id: str, assignments: Mapping[str, float]) -> str:
@@ -53,6 +55,15 @@ c.ClearSolutions.code_stub = {{"python": {json.dumps(CODE_STUB)}}}
 
 # Seconds per cell when nbgrader runs a notebook (validate, autograde).
 c.Execute.timeout = {EXECUTE_TIMEOUT}
+
+# An answer cell that calls robotconf (which computes every answer of the course) earns
+# no automatic points: its test cell says so, and this step marks it for manual grading.
+from nbgrader.converters import Autograde  # noqa: E402
+from nbgrader.preprocessors import SaveAutoGrades  # noqa: E402
+
+_steps = list(Autograde.class_traits()["autograde_preprocessors"].default())
+_steps.insert(_steps.index(SaveAutoGrades) + 1, "{FLAG_STEP}")
+c.Autograde.autograde_preprocessors = _steps
 """
 
 
@@ -83,11 +94,16 @@ instructor's copy, never hand it out. Students get the copies nbgrader makes in
 5. `nbgrader generate_feedback {first}` writes an HTML report per student to
    `feedback/`; `nbgrader export` writes all grades to `grades.csv`.
 
-Points: {POINTS_PER_EXERCISE} per exercise, {POINTS_PER_MATRIX} for a 4×4 matrix. A test
-cell prints the checker's hints; a wrong matrix, vector or set of the right shape earns
-partial credit per entry, and symbolic answers are checked again, hidden, at
-{HIDDEN_SAMPLES} other values of the symbols. The rules are in robotconf's
-`docs/grading.md`; `robotconf course key KEY.md` writes the answer key.
+Points come from the course's weighting table (`course/kit/weights.md`; without it
+{POINTS_PER_EXERCISE} per exercise, {POINTS_PER_MATRIX} for a 4×4 matrix). The checks are
+hidden tests: the students' copies hold no expected value. A test cell prints the
+checker's hints and what cost the points: a wrong answer earns the share of a named slip
+of a right method (half, unless the table says otherwise) or the share of its numbers
+that are right (at most three quarters); symbolic answers are checked again at
+{HIDDEN_SAMPLES} other values of the symbols. An answer cell that calls robotconf earns
+no automatic points and is marked "needs manual grading" (formgrader lists it). The
+rules are in robotconf's `docs/grading.md`; `robotconf course rubric 09` shows a lesson's
+rubric, `robotconf course key KEY.md` writes the answer key.
 """
 
 

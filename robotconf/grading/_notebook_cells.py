@@ -118,6 +118,20 @@ def _assigned_names(source: str) -> list[str]:
     return names
 
 
+def answer_variable(names: list[str]) -> str | None:
+    """The answer an answer cell assigns: its one ``answer_…`` name, else its one name.
+
+    A worked answer may name its steps first (``V = …``, then ``answer_4 = …``).
+
+    >>> answer_variable(["V", "A", "answer_4"]), answer_variable(["q"]), answer_variable([])
+    ('answer_4', 'q', None)
+    """
+    answers = {name for name in names if name.startswith("answer_")}
+    if len(answers) == 1:
+        return answers.pop()
+    return names[0] if not answers and len(set(names)) == 1 else None
+
+
 def _used_names(source: str) -> set[str]:
     try:
         return {node.id for node in ast.walk(ast.parse(source)) if isinstance(node, ast.Name)}
@@ -145,7 +159,7 @@ def find_exercises(notebook: dict[str, Any], where: str = "notebook") -> list[Ex
     Raises
     ------
     InvalidInputError
-        When an answer cell does not assign exactly one variable, has no check cell, or
+        When an answer cell assigns no single answer variable, has no check cell, or
         a check cell belongs to no answer cell.
 
     Examples
@@ -169,13 +183,14 @@ def find_exercises(notebook: dict[str, Any], where: str = "notebook") -> list[Ex
                 names = _assigned_names(cell_source(cell))
             except SyntaxError:
                 names = []
-            if len(set(names)) != 1:
+            variable = answer_variable(names)
+            if variable is None:
                 raise InvalidInputError(
                     f"{where} cell {index}",
                     names,
-                    "an answer cell that assigns exactly one variable",
+                    "an answer cell that assigns one answer_ variable (helpers may come first)",
                 )
-            answers.append((index, names[0]))
+            answers.append((index, variable))
         if CHECK_TAG in tags:
             checks.append(index)
     exercises: list[Exercise] = []

@@ -1,12 +1,15 @@
-"""``robotconf course release``: the course as an nbgrader source tree.
+"""``robotconf course release``: the course as an nbgrader source tree of graded copies.
 
 One assignment per lesson, ``OUT/source/<lesson>/<lesson>.ipynb``, built from the
 lesson's solutions notebook: every answer cell becomes an autograded answer (the
 solution between nbgrader's markers, the students' ``answer_k = None`` line kept),
-every check cell an autograder test worth the exercise's points (partial credit per
-entry, a hidden second check for symbolic answers), every other cell read-only; the
-``student-id`` cell stays editable. The solutions notebook runs first: its checks show
-each expected value's kind and shape (for the points) and must all pass. The markdown
+every check cell an autograder test worth the exercise's points by the course's
+weighting table (``course/kit/weights.md``), graded by the rubric and hidden whole from
+the students' copy, so no expected value is in it; cells tagged ``practice`` (compare
+with ``rc.…``) are left out; every other cell is read-only; the ``student-id`` cell
+stays editable. A cell after the title tells the student how the copy is graded. The
+solutions notebook runs first: its checks show each expected value's kind and shape
+(for the default points) and must all pass. The markdown
 text comes from the students' exercises notebook when the two line up cell by cell (the
 solutions' titles say "(solutions)"). ``OUT/source`` is the instructor's tree;
 ``nbgrader generate_assignment`` writes the students' copies, without solutions.
@@ -37,7 +40,9 @@ from ._notebook_cells import (
     read_notebook,
     student_id_cell,
 )
-from ._points import PARTIAL_KINDS, points_for
+from .rubric._points import points_for
+from .rubric._rubric import Rubric
+from .rubric._weights import Weights, find_weights
 
 __all__ = ["Release", "ReleasedExercise", "release_course", "source_notebook"]
 
@@ -58,18 +63,22 @@ class ReleasedExercise:
         The checker's kind (``"matrix"``, ``"vector"``, ...), ``None`` when the check
         called no checker.
     partial : bool
-        Whether the test cell can give partial credit (its kind has entries).
+        Whether the test cell grades a wrong answer by the rubric (its check could be
+        wrapped; else right or wrong, whole points).
     hidden : bool
-        Whether it has a hidden test.
+        Whether it rechecks a symbolic answer at other values of its symbols.
+    rubric : Rubric
+        How the exercise is graded (points, shares of named slips).
     """
 
     lesson: str
     number: int
     variable: str
-    points: int
+    points: float
     kind: str | None
     partial: bool
     hidden: bool
+    rubric: Rubric
 
 
 @dataclass(frozen=True)
@@ -92,7 +101,7 @@ class Release:
     exercises: list[ReleasedExercise]
     notes: list[str]
 
-    def points(self, lesson: str) -> int:
+    def points(self, lesson: str) -> float:
         """Total points of one released lesson."""
         return sum(e.points for e in self.exercises if e.lesson == lesson)
 
@@ -135,11 +144,58 @@ def _stub(variable: str, stubs: dict[str, str]) -> str:
     return f"{variable} = None  # your answer"
 
 
+#: Cells only the practice copies keep ("compare with rc.…"): a graded copy leaves them out.
+PRACTICE_TAG = "practice"
+
+_GRADED_INTRO = """### How this copy is graded
+
+Answer each exercise in its answer cell, as in class. The checks are not in this copy:
+they run when your notebook is graded, and the feedback shows what they said.
+
+- **Points:** {points}.
+- **Rounding:** numbers with 3 significant digits are accepted (unless an exercise says
+  otherwise); fewer digits lose points.
+- **Credit for the method:** a wrong answer with one recognised slip of a right method
+  (a sign, atan for atan2, a unit, a forgotten synchronization, …) earns a share of the
+  points, usually half; an answer of several numbers earns the share of its numbers
+  that are right, at most three quarters. A blank answer earns nothing.
+- **Your own work:** an answer cell that calls robotconf (`rc.…`, or a method of a
+  robot, program or result) is not graded automatically: it earns no points until your
+  teacher has looked at it. Derive the answer yourself; numpy as a calculator is fine.
+"""
+
+
+def _intro_cell(released: list[ReleasedExercise]) -> dict[str, Any]:
+    listed = ", ".join(f"exercise {e.number}: {e.points:g}" for e in released)
+    total = sum(e.points for e in released)
+    text = _GRADED_INTRO.format(points=f"{total:g} in all ({listed})")
+    metadata = {"nbgrader": nbgrader_metadata("graded_copy_intro", locked=True)}
+    return {
+        "cell_type": "markdown",
+        "id": "graded-copy-intro",
+        "metadata": metadata,
+        "source": text,
+    }
+
+
+def _rubric(
+    weights: Weights | None, lesson: str, number: int, kind: str | None, shape: Any
+) -> Rubric:
+    """The rubric of one exercise: the table's points and shares, else the defaults."""
+    points = weights.points_of(lesson, number) if weights is not None else None
+    if points is None:
+        points = points_for(kind, shape)
+    if weights is None:
+        return Rubric(points)
+    return weights.rubric(lesson, number, points)
+
+
 def source_notebook(
     solutions: dict[str, Any],
     run: SolutionsRun,
     lesson: str,
     exercises: dict[str, Any] | None = None,
+    weights: Weights | None = None,
 ) -> tuple[dict[str, Any], list[ReleasedExercise]]:
     """The nbgrader source notebook of one lesson.
 
@@ -154,6 +210,9 @@ def source_notebook(
     exercises : dict, optional
         The students' exercises notebook: its answer lines become the stubs, and its
         markdown the text when the two notebooks line up.
+    weights : Weights, optional
+        The course's weighting table (points and shares); default one point an
+        exercise, two for a 4×4 matrix, half the points for a named slip.
 
     Returns
     -------
@@ -195,9 +254,14 @@ def source_notebook(
         elif index in checks:
             exercise = checks[index]
             ran = runs[exercise.variable]
-            points = points_for(ran.kind, ran.shape)
+            rubric = _rubric(weights, lesson, exercise.number, ran.kind, ran.shape)
+            points = rubric.points
             source, partial = autograder_source(
-                cell_source(cell), points, hidden=ran.symbolic, where=f"{where} cell {index}"
+                cell_source(cell),
+                rubric,
+                variable=exercise.variable,
+                recheck=ran.symbolic,
+                where=f"{where} cell {index}",
             )
             cell["source"] = source
             metadata["nbgrader"] = nbgrader_metadata(
@@ -212,8 +276,9 @@ def source_notebook(
                     exercise.variable,
                     points,
                     ran.kind,
-                    partial and ran.kind in PARTIAL_KINDS,
+                    partial,
                     partial and ran.symbolic,
+                    rubric,
                 )
             )
         elif index == id_cell:
@@ -223,6 +288,10 @@ def source_notebook(
             metadata["nbgrader"] = nbgrader_metadata(f"locked_{index:02d}", locked=True)
         if tags:
             metadata["tags"] = tags
+    kept = [cell for cell in cells if PRACTICE_TAG not in cell_tags(cell)]
+    first = next((i for i, c in enumerate(kept) if c.get("cell_type") == "markdown"), -1)
+    kept.insert(first + 1, _intro_cell(released))
+    notebook["cells"] = cells = kept
     ids = [c["metadata"]["nbgrader"]["grade_id"] for c in cells if "nbgrader" in c["metadata"]]
     if len(ids) != len(set(ids)):
         duplicate = next(i for i in ids if ids.count(i) > 1)
@@ -293,9 +362,9 @@ def release_course(
     ...     written = sorted(p.name for p in Path(out).rglob("*.*"))
     >>> written
     ['01_homogeneous_transforms.ipynb', 'README.md', 'nbgrader_config.py']
-    >>> [(e.variable, e.points, e.hidden) for e in release.exercises]
-    [('answer_1', 2, False), ('answer_2', 2, False), ('answer_3', 1, False),
-     ('answer_4', 2, True)]
+    >>> [(e.variable, e.points, e.hidden) for e in release.exercises]  # course/kit/weights.md
+    [('answer_1', 1.0, False), ('answer_2', 2.0, False), ('answer_3', 1.0, False),
+     ('answer_4', 2.0, True)]
     """
     say = say or (lambda _: None)
     if not isinstance(course_id, str) or not _COURSE_ID.fullmatch(course_id):
@@ -307,6 +376,7 @@ def release_course(
         raise InvalidInputError("OUT", str(out), "a folder (created if missing)", "not a folder:")
     folder = find_course(course)
     names = select_lessons(folder, lessons)
+    weights = find_weights(folder)
     built: list[tuple[str, dict[str, Any]]] = []
     exercises: list[ReleasedExercise] = []
     notes: list[str] = []
@@ -324,7 +394,7 @@ def release_course(
         student_path = exercises_notebook(folder, lesson)
         students = read_notebook(student_path) if student_path else None
         solutions = read_notebook(path)
-        notebook, done = source_notebook(solutions, run, lesson, students)
+        notebook, done = source_notebook(solutions, run, lesson, students, weights)
         if not _aligned(solutions, students):
             notes.append(
                 f"{lesson}: the exercises notebook does not line up with the solutions "

@@ -8,14 +8,9 @@ displacement ``Δ_j`` (``q_j = q_j0 + Δ_j·u``), a LIN or CIRC move by the path
 All dimensions then start and stop together (synchronized): the slowest sets the
 duration and the others scale down.
 
-Trapezoidal (time-optimal under V and A)
-    ``T = 1/V + V/A`` with blend time ``t_b = V/A`` when ``V²/A ≤ 1`` (the cruise speed
-    is reached); otherwise a triangle, ``t_b = √(1/A)``, ``T = 2·t_b``, peak speed
-    ``A·t_b``. In length units: ``T = L/v + v/a``, a triangle when ``L < v²/a``.
-Quintic (rest-to-rest, zero acceleration at both ends)
-    ``u = 10τ³ − 15τ⁴ + 6τ⁵`` with ``τ = t/T``: peak ``u̇ = 15/(8T)`` at ``τ = 1/2`` and
-    peak ``|ü| = 10/(√3·T²)`` at ``τ = (3 ∓ √3)/6``, so
-    ``T = max(15/(8V), √(10/(√3·A)))``.
+The time laws themselves (the trapezoid, time-optimal under V and A, and the quintic,
+at rest with zero acceleration at both ends) have one home, shared with the signals and
+the course's profile checker: :mod:`robotconf.signals` (``_time_laws``).
 
 At a corner of the trapezoid the acceleration jumps; like the signals, the profile
 reports the right-sided value there (docs/conventions.md, "Motion and DVA").
@@ -27,13 +22,19 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..signals import (
+    PEAK_ACCEL,
+    PEAK_SPEED,
+    fastest_polynomial,
+    fastest_trapezoid,
+    polynomial_law,
+    trapezoid_law,
+)
+
 __all__ = ["PROFILES", "Profile", "trapezoidal", "quintic", "still"]
 
 #: The profiles a PTP move may ask for; LIN and CIRC moves are always trapezoidal.
 PROFILES = ("trapezoidal", "quintic")
-
-_QUINTIC_SPEED = 15.0 / 8.0
-_QUINTIC_ACCEL = 10.0 / float(np.sqrt(3.0))
 
 
 @dataclass(frozen=True)
@@ -91,31 +92,10 @@ class Profile:
         return self._trapezoid(t)
 
     def _quintic(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        T = self.duration
-        tau = np.minimum(t / T, 1.0)
-        u = tau**3 * (10.0 + tau * (-15.0 + 6.0 * tau))
-        ud = 30.0 * tau**2 * (1.0 - tau) ** 2 / T
-        udd = 60.0 * tau * (1.0 + tau * (-3.0 + 2.0 * tau)) / T**2
-        over = t >= T
-        udd[over] = 0.0
-        ud[over] = 0.0
-        return u, ud, udd
+        return polynomial_law("quintic", t, self.duration)
 
     def _trapezoid(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
-        T, tb, a, peak = self.duration, self.blend, self.accel, self.speed
-        rising = t < tb
-        falling = (t >= T - tb) & (t < T)
-        over = t >= T
-        left = T - t
-        u = np.where(rising, 0.5 * a * t**2, 0.5 * a * tb**2 + peak * (t - tb))
-        u = np.where(falling, 1.0 - 0.5 * a * left**2, u)
-        ud = np.where(rising, a * t, peak)
-        ud = np.where(falling, a * left, ud)
-        udd = np.where(rising, a, np.where(falling, -a, 0.0))
-        u[over] = 1.0
-        ud[over] = 0.0
-        udd[over] = 0.0
-        return u, ud, udd
+        return trapezoid_law(t, self.duration, self.blend, self.speed)
 
 
 def trapezoidal(speed: float, accel: float) -> Profile:
@@ -137,11 +117,8 @@ def trapezoidal(speed: float, accel: float) -> Profile:
     >>> trapezoidal(2.0, 1.0).kind, trapezoidal(2.0, 1.0).duration  # V²/A = 4 > 1: triangle
     ('trapezoidal', 2.0)
     """
-    if speed * speed <= accel:  # the cruise speed is reached (V²/A ≤ 1)
-        blend = speed / accel
-        return Profile("trapezoidal", 1.0 / speed + blend, blend, speed, accel)
-    blend = float(np.sqrt(1.0 / accel))
-    return Profile("trapezoidal", 2.0 * blend, blend, accel * blend, accel)
+    duration, blend, peak = fastest_trapezoid(speed, accel)
+    return Profile("trapezoidal", duration, blend, peak, accel)
 
 
 def quintic(speed: float, accel: float) -> Profile:
@@ -153,9 +130,13 @@ def quintic(speed: float, accel: float) -> Profile:
     >>> p.duration, round(p.accel, 6)
     (1.0, 5.773503)
     """
-    duration = max(_QUINTIC_SPEED / speed, float(np.sqrt(_QUINTIC_ACCEL / accel)))
+    duration = fastest_polynomial("quintic", speed, accel)
     return Profile(
-        "quintic", duration, 0.0, _QUINTIC_SPEED / duration, _QUINTIC_ACCEL / duration**2
+        "quintic",
+        duration,
+        0.0,
+        PEAK_SPEED["quintic"] / duration,
+        PEAK_ACCEL["quintic"] / duration**2,
     )
 
 

@@ -8,6 +8,7 @@ from typing import TYPE_CHECKING
 
 from .._budget import check_memory
 from ..motion import QUANTITIES, SimulationSettings
+from ..teaching import SYMBOLIC_TOO_LONG as _REFUSAL
 from ._bad_input import BadInput
 
 if TYPE_CHECKING:  # pragma: no cover
@@ -49,12 +50,8 @@ MAX_MODULE_PLOTS = 16
 #: statistics' sorted copy); pandas writes the CSV in chunks.
 RESULT_COPIES = 4
 
-SYMBOLIC_TOO_LONG = (
-    "No symbolic matrices: this chain is too long for them by default, as sympy's "
-    "time grows exponentially with the rotations in the chain, from seconds to many "
-    "minutes (robotconf.teaching.symbolic_fits). To get them anyway, run "
-    "rc.derivation(robot, symbolic=True) in a notebook and accept the wait."
-)
+# The sentence rc.derivation refuses such a chain with: one text for both.
+SYMBOLIC_TOO_LONG = "No symbolic matrices: " + _REFUSAL
 SYMBOLIC_OFF = "No symbolic matrices: --no-symbolic was given."
 
 

@@ -33,6 +33,16 @@ from ._spec import (
     parse_signal,
     parse_signal_spec,
 )
+from ._time_laws import (
+    PEAK_ACCEL,
+    PEAK_SPEED,
+    POLYNOMIAL_LAWS,
+    TAU_COEFFICIENTS,
+    fastest_polynomial,
+    fastest_trapezoid,
+    polynomial_law,
+    trapezoid_law,
+)
 
 __all__ = [
     "Affine",
@@ -55,6 +65,15 @@ __all__ = [
     "MAX_SPEC_LENGTH",
     "MAX_NUMBER_CHARS",
     "Trapezoidal",
+    # the time laws of rest-to-rest motions (one home for signals, programs and the course)
+    "polynomial_law",
+    "trapezoid_law",
+    "fastest_trapezoid",
+    "fastest_polynomial",
+    "POLYNOMIAL_LAWS",
+    "TAU_COEFFICIENTS",
+    "PEAK_SPEED",
+    "PEAK_ACCEL",
     # limits
     "MIN_DURATION",
     "MAX_RATE",

@@ -1,7 +1,9 @@
 """Smooth point-to-point profiles: cubic, quintic and trapezoidal velocity.
 
 Each moves a coordinate from ``start`` to ``end`` in ``duration`` seconds beginning at
-``start_time``; it holds ``start`` before and ``end`` after. Velocity is continuous in all
+``start_time``; it holds ``start`` before and ``end`` after. The time laws themselves
+(``start + (end − start)·u(t)``) are shared with the robot programs and the course's
+profile checker (:mod:`._time_laws`). Velocity is continuous in all
 three, so none has kinks. The acceleration of the cubic (at both ends) and of the
 trapezoid (at its four corners) jumps; there the **right-sided** value is reported.
 
@@ -21,12 +23,15 @@ import numpy as np
 from .._errors import InvalidInputError
 from .._validation import check_finite_number
 from ._base import MAX_RATE, MIN_DURATION, Signal
+from ._time_laws import polynomial_law, trapezoid_law
 
 __all__ = ["Cubic", "Quintic", "Trapezoidal"]
 
 
 @dataclass(frozen=True, repr=False)
 class _PointToPoint(Signal):
+    _law = "cubic"  # the time law of u(t) (a class attribute, not a field)
+
     start: float = 0.0
     end: float = 1.0
     duration: float = 1.0
@@ -91,13 +96,18 @@ class _PointToPoint(Signal):
         """When the motion ends (s)."""
         return self.start_time + self.duration
 
-    def _tau(self, t: np.ndarray) -> np.ndarray:
-        """Normalized time in [0, 1], clipped."""
-        return np.clip((t - self.start_time) / self.duration, 0.0, 1.0)
+    def _law_at(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
+        """``u``, ``u̇``, ``ü`` of the time law at ``t`` (s, absolute time)."""
+        return polynomial_law(self._law, t - self.start_time, self.duration)
 
-    def _inside(self, t: np.ndarray) -> np.ndarray:
-        """``start_time ≤ t < end_time``: where right-sided accelerations are non-zero."""
-        return (t >= self.start_time) & (t < self.end_time)
+    def _value(self, t: np.ndarray) -> np.ndarray:
+        return self.start + (self.end - self.start) * self._law_at(t)[0]
+
+    def _velocity(self, t: np.ndarray) -> np.ndarray:
+        return (self.end - self.start) * self._law_at(t)[1]
+
+    def _acceleration(self, t: np.ndarray) -> np.ndarray:
+        return (self.end - self.start) * self._law_at(t)[2]
 
 
 @dataclass(frozen=True, repr=False)
@@ -126,18 +136,7 @@ class Cubic(_PointToPoint):
     (array([0. , 0.5, 1. , 1. ]), 0.75, 1.5)
     """
 
-    def _value(self, t: np.ndarray) -> np.ndarray:
-        s = self._tau(t)
-        return self.start + (self.end - self.start) * (s * s * (3.0 - 2.0 * s))
-
-    def _velocity(self, t: np.ndarray) -> np.ndarray:
-        s = self._tau(t)
-        return ((self.end - self.start) / self.duration) * (6.0 * s * (1.0 - s))
-
-    def _acceleration(self, t: np.ndarray) -> np.ndarray:
-        s = self._tau(t)
-        scale = (self.end - self.start) / self.duration**2
-        return np.where(self._inside(t), scale * (6.0 - 12.0 * s), 0.0)
+    _law = "cubic"
 
 
 @dataclass(frozen=True, repr=False)
@@ -153,18 +152,7 @@ class Quintic(_PointToPoint):
     (array([1., 2., 3.]), 3.75)
     """
 
-    def _value(self, t: np.ndarray) -> np.ndarray:
-        s = self._tau(t)
-        return self.start + (self.end - self.start) * (s**3 * (10.0 + s * (-15.0 + 6.0 * s)))
-
-    def _velocity(self, t: np.ndarray) -> np.ndarray:
-        s = self._tau(t)
-        return ((self.end - self.start) / self.duration) * (30.0 * (s * (1.0 - s)) ** 2)
-
-    def _acceleration(self, t: np.ndarray) -> np.ndarray:
-        s = self._tau(t)
-        scale = (self.end - self.start) / self.duration**2
-        return scale * (60.0 * s * (1.0 - s) * (1.0 - 2.0 * s))
+    _law = "quintic"
 
 
 @dataclass(frozen=True, repr=False)
@@ -218,33 +206,7 @@ class Trapezoidal(_PointToPoint):
     def _extra_repr(self) -> str:
         return "" if self.accel_fraction == 0.25 else f", accel_fraction={self.accel_fraction!r}"
 
-    def _parts(self, t: np.ndarray) -> tuple[np.ndarray, float, float, float]:
-        """Elapsed time clipped to [0, D], blend time, cruise velocity, acceleration."""
+    def _law_at(self, t: np.ndarray) -> tuple[np.ndarray, np.ndarray, np.ndarray]:
         blend = self.accel_fraction * self.duration
-        cruise = (self.end - self.start) / (self.duration - blend)
-        elapsed = np.clip(t - self.start_time, 0.0, self.duration)
-        return elapsed, blend, cruise, cruise / blend
-
-    def _value(self, t: np.ndarray) -> np.ndarray:
-        s, tb, v, a = self._parts(t)
-        # Each branch sees only its own stretch of time, so none overflows where unused.
-        rise = np.minimum(s, tb)
-        rising = self.start + 0.5 * a * rise * rise
-        cruising = self.start + v * (s - 0.5 * tb)
-        left = np.minimum(self.duration - s, tb)
-        falling = self.end - 0.5 * a * left * left
-        return np.where(s < tb, rising, np.where(s < self.duration - tb, cruising, falling))
-
-    def _velocity(self, t: np.ndarray) -> np.ndarray:
-        s, tb, v, a = self._parts(t)
-        return (
-            np.minimum(np.minimum(a * s, v), a * (self.duration - s))
-            if v >= 0
-            else (np.maximum(np.maximum(a * s, v), a * (self.duration - s)))
-        )
-
-    def _acceleration(self, t: np.ndarray) -> np.ndarray:
-        s, tb, v, a = self._parts(t)
-        inside = self._inside(t)
-        out = np.where(s < tb, a, np.where(s < self.duration - tb, 0.0, -a))
-        return np.where(inside, out, 0.0)
+        speed = 1.0 / (self.duration - blend)  # the area under u̇ is 1
+        return trapezoid_law(t - self.start_time, self.duration, blend, speed)

@@ -10,11 +10,11 @@ Symbolic chain (an independent second implementation of the matrices, in sympy)
     :func:`elementary_matrix`, :func:`dh_factors`, :func:`exact_number`
 Expected answers and the checker
     :func:`expected_matrix`, :class:`ExpectedMatrix`, :func:`check_matrix`,
-    :func:`assert_matrix`, :class:`MatrixCheck`. Answers are untrusted: the checker
-    decides by numbers at seeded random points, refuses entries that are not real, and
-    does algebra only within a small budget, so any answer is judged in ≤ 2 s for a 4×4
-    matrix (see :func:`check_matrix`, Notes).
-Answers that are not matrices (same parser and numeric judge, 0.1 % tolerance)
+    :func:`assert_matrix`, :class:`MatrixCheck` (codes: :data:`MATRIX_DIAGNOSES`).
+    Answers are untrusted: the checker decides by numbers at seeded random points,
+    refuses entries that are not real, and does algebra only within a small budget, so
+    any answer is judged in ≤ 2 s for a 4×4 matrix (see :func:`check_matrix`, Notes).
+Answers that are not matrices (same parser and numeric judge; 3 significant digits pass)
     :func:`check_value`, :func:`check_vector`, :func:`check_angle`, :func:`check_set`,
     :func:`check_interval`, their ``assert_*`` forms (:func:`assert_value`,
     :func:`assert_vector`, :func:`assert_angle`, :func:`assert_set`,
@@ -29,7 +29,10 @@ DH tables (judged by the robot they describe: joint axes and end-effector at see
     :func:`check_dh_table`, :func:`assert_dh_table`, :class:`DHTableCheck`,
     :func:`parse_dh_rows`
 Per-student exercise parameters (the same id gives the same numbers on every machine)
-    :class:`Variant`
+    :class:`Variant`; the course's exercises with them, screened so that every typical
+    slip gives a refused answer: :class:`Assignment` (:mod:`.exercises`); quizzes and
+    exams drawn per student from them: :class:`Exam`;
+    :data:`EXERCISE_SLIPS`
 Student text (a whitelist parser: nothing is evaluated)
     :func:`parse_expression`, :func:`parse_matrix`, :class:`ParserLimits`
 
@@ -37,45 +40,67 @@ Student text (a whitelist parser: nothing is evaluated)
 '0.3'
 """
 
-from ._answer_checks import check_angle, check_value, check_vector
-from ._answer_checks_assert import (
+from .checks import (
+    DH_DIAGNOSES,
+    DIAGNOSES,
+    MATRIX_DIAGNOSES,
+    AnswerCheck,
+    DHTableCheck,
+    MatrixCheck,
     assert_angle,
+    assert_dh_table,
     assert_interval,
+    assert_matrix,
     assert_set,
     assert_value,
     assert_vector,
+    check_angle,
+    check_dh_table,
+    check_interval,
+    check_matrix,
+    check_set,
+    check_value,
+    check_vector,
+    parse_dh_rows,
 )
-from ._answer_checks_interval import check_interval
-from ._answer_checks_result import AnswerCheck
-from ._answer_checks_sets import check_set
-from ._check_result import MatrixCheck
-from ._checker import assert_matrix, check_matrix
-from ._derivation import Derivation, derivation
-from ._dh_table_check import DHTableCheck, assert_dh_table, check_dh_table
-from ._dh_table_text import parse_dh_rows
-from ._expected import ExpectedMatrix, as_expected, evaluate, expected_matrix, sample_points
-from ._formatting import format_number, latex_text, matrix_grid, matrix_latex
-from ._ik_answers import assert_ik_solution, check_ik_solution
-from ._ik_answers_result import IK_DIAGNOSES, IKCheck
-from ._ik_answers_sets import assert_ik_solutions, check_ik_solutions
-from ._mistakes import ROTATION_PATTERN, Candidate, generic_candidates, is_rotation_like
-from ._profile_checks import assert_profile, check_profile
-from ._profile_checks_forms import PROFILE_FORMS
-from ._profile_checks_slips import PROFILE_DIAGNOSES
-from ._profile_checks_task import ProfileTask
-from ._step import DerivationStep
-from ._student_parser import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
-from ._symbolic import (
+from .derivation import (
+    SYMBOLIC_TOO_LONG,
+    Derivation,
+    DerivationStep,
+    ExpectedMatrix,
+    SymbolicChain,
+    as_expected,
+    derivation,
     dh_factors,
     elementary_matrix,
+    evaluate,
     exact_number,
+    expected_matrix,
+    format_number,
+    latex_text,
     link_factors,
+    matrix_grid,
+    matrix_latex,
     module_matrix,
+    sample_points,
+    simplify_matrix,
     sine_entries,
+    symbolic_chain,
+    symbolic_fits,
 )
-from ._symbolic_chain import SymbolicChain, simplify_matrix, symbolic_chain
-from ._symbolic_limits import symbolic_fits
-from ._variants import Variant
+from .diagnosis import ROTATION_PATTERN, Candidate, generic_candidates, is_rotation_like
+from .exercises import EXERCISE_SLIPS, Assignment, Exam
+from .ik_answers import (
+    IK_DIAGNOSES,
+    IKCheck,
+    assert_ik_solution,
+    assert_ik_solutions,
+    check_ik_solution,
+    check_ik_solutions,
+)
+from .profiles import PROFILE_DIAGNOSES, PROFILE_FORMS, ProfileTask, assert_profile, check_profile
+from .reading import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
+from .variants import Variant
 
 __all__ = [
     # derivations
@@ -97,6 +122,7 @@ __all__ = [
     "exact_number",
     "sine_entries",
     "symbolic_fits",
+    "SYMBOLIC_TOO_LONG",
     # expected answers and the checker
     "expected_matrix",
     "ExpectedMatrix",
@@ -118,6 +144,9 @@ __all__ = [
     "assert_set",
     "assert_interval",
     "AnswerCheck",
+    "DIAGNOSES",
+    "MATRIX_DIAGNOSES",
+    "DH_DIAGNOSES",
     "Candidate",
     "generic_candidates",
     "is_rotation_like",
@@ -140,8 +169,11 @@ __all__ = [
     "assert_dh_table",
     "DHTableCheck",
     "parse_dh_rows",
-    # per-student variants
+    # per-student variants, and the course's exercises with them
     "Variant",
+    "Assignment",
+    "Exam",
+    "EXERCISE_SLIPS",
     # student text
     "parse_expression",
     "parse_matrix",

@@ -32,6 +32,11 @@ class Case:
         course's own wrong-answer tests); the others count toward the measured rate.
     options : dict
         Extra keyword arguments of ``check_matrix`` (``tol`` for the numeric exercises).
+    split : str
+        ``"in-sample"`` (written while the diagnoses were built) or ``"held-out"`` (written
+        afterwards by someone who did not read the diagnosis code; set by the module).
+    student : str
+        The student id of an exercise with per-student numbers (``"L12.ex4"``).
     """
 
     id: str
@@ -42,6 +47,8 @@ class Case:
     diagnosis: str | None = None
     must: bool = False
     options: dict[str, Any] = field(default_factory=dict)
+    split: str = "in-sample"
+    student: str = "demo"
 
 
 def right(family: str, name: str, reference: str, answer: Any, **options: Any) -> Case:

@@ -98,7 +98,7 @@ CASES = [
         " [0, 0, 0, 1]]",
         "column_swap",
     ),
-    wrong(F, "L7.ex2-x-y-exchanged", "L7.ex2", [35, 0, -40], "row_swap"),
+    wrong(F, "L7.ex2-x-y-exchanged", "L7.ex2", [35, 0, -40], "swapped_components"),
     wrong(
         F,
         "L4.ex2-x-y-exchanged",

@@ -3,7 +3,7 @@ back), numbers rounded too coarsely."""
 
 from __future__ import annotations
 
-from .case import wrong
+from .case import right, wrong
 
 F = "lengths"
 
@@ -67,20 +67,34 @@ CASES = [
     ),
     wrong(F, "L6.ex2-in-millimetres-one-decimal", "L6.ex2", [-817.3, -191.5, -5.5], "unit_slip"),
     # right to the digits kept, but too few digits
-    wrong(
+    # Within 0.5 % of 0.866 and 1.732: right under the course's rule (3 significant
+    # digits pass); one decimal is too coarse.
+    right(
         F,
         "L5.ex3-two-decimals",
         "L5.ex3",
         [[0.87, -0.5, 0, 1.73], [0.5, 0.87, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]],
+    ),
+    wrong(
+        F,
+        "L5.ex3-one-decimal",
+        "L5.ex3",
+        [[0.9, -0.5, 0, 1.7], [0.5, 0.9, 0, 1], [0, 0, 1, 0], [0, 0, 0, 1]],
         "coarse_rounding",
         must=True,
     ),
     wrong(F, "L6.ex2-two-decimals", "L6.ex2", [-0.82, -0.19, -0.01], "coarse_rounding", must=True),
-    wrong(
+    right(  # 0.88 and 0.48 are within 0.5 % of cos 0.5 and sin 0.5
         F,
         "L2.ex4-two-decimals",
         "L2.ex4",
         "[[0.88, -0.48, 0, 0], [0.48, 0.88, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]",
+    ),
+    wrong(
+        F,
+        "L2.ex4-one-decimal",
+        "L2.ex4",
+        "[[0.9, -0.5, 0, 0], [0.5, 0.9, 0, 0], [0, 0, 1, 0], [0, 0, 0, 1]]",
         "coarse_rounding",
     ),
     wrong(
