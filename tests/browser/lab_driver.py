@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import json
+import re
 from pathlib import Path
 
 import nbformat
@@ -115,3 +116,123 @@ def red_moved(page, canvas, start: np.ndarray, *, at_least: float = 5.0, timeout
         page.wait_for_timeout(250)
         count, centroid = red_centroid(pixels(canvas))
     return count, centroid
+
+
+# -- the panel's forms (robotconf/panel/form/js/form.js) ------------------------------------
+# Every editor of the configurator is one form: controls found by their key, the same
+# string as ``panel.errors`` and the headless tests use (``modules[1].q``, ``preset``).
+
+#: The thumb of a range input: where its value sits on the track, in page pixels.
+_THUMB_JS = """(e) => {
+  const r = e.getBoundingClientRect();
+  const lo = Number(e.min), hi = Number(e.max), v = Number(e.value);
+  const f = hi > lo ? (v - lo) / (hi - lo) : 0;
+  const thumb = 16;
+  return [r.left + thumb / 2 + f * (r.width - thumb), r.top + r.height / 2];
+}"""
+
+
+def control(page, key: str, scope: str = NOTEBOOK):  # type: ignore[no-untyped-def]
+    """The form control with ``key`` (its ``.rc-control`` element) in ``scope``."""
+    return page.locator(f'{scope} .rc-control[data-key="{key}"]').first
+
+
+def reveal(locator) -> None:  # type: ignore[no-untyped-def]
+    """Scroll ``locator`` to the bottom of the notebook's view, as a user scrolls to it:
+    the pinned 3D pane covers the top (``scroll_into_view_if_needed`` could put the
+    element under it)."""
+    locator.evaluate("element => element.scrollIntoView({ block: 'end' })")
+    locator.page.wait_for_timeout(200)
+
+
+def drag_slider(page, key: str, dx: float, steps: int = 15, scope: str = NOTEBOOK) -> float:  # type: ignore[no-untyped-def]
+    """Drag the slider of number control ``key`` by ``dx`` pixels with the mouse, in
+    ``steps`` moves without pauses; returns the value the slider shows when let go."""
+    slider = control(page, key, scope).locator("input.rc-slider")
+    reveal(slider)
+    x, y = slider.evaluate(_THUMB_JS)
+    page.mouse.move(x, y)
+    page.mouse.down()
+    for k in range(1, steps + 1):
+        page.mouse.move(x + dx * k / steps, y)
+    page.mouse.up()
+    return float(slider.input_value())
+
+
+def step_slider(  # type: ignore[no-untyped-def]
+    page, key: str, presses: int, arrow: str = "ArrowRight", scope: str = NOTEBOOK
+) -> None:
+    """Press ``arrow`` ``presses`` times on number control ``key``'s slider (one notch
+    each, as fast as the keyboard repeats: a burst of values, as a drag sends)."""
+    slider = control(page, key, scope).locator("input.rc-slider")
+    reveal(slider)
+    slider.focus()
+    for _ in range(presses):
+        slider.press(arrow)
+
+
+def type_number(page, key: str, value: float | str, scope: str = NOTEBOOK) -> None:  # type: ignore[no-untyped-def]
+    """Type ``value`` into number control ``key``'s box; Enter sends it."""
+    box = control(page, key, scope).locator("input.rc-box")
+    reveal(box)
+    box.fill(value if isinstance(value, str) else f"{value:g}")
+    box.press("Enter")
+
+
+def choose(page, key: str, label: str, scope: str = NOTEBOOK) -> None:  # type: ignore[no-untyped-def]
+    """Pick the option shown as ``label`` in dropdown or toggle ``key``."""
+    found = control(page, key, scope)
+    reveal(found)
+    select = found.locator("select")
+    if select.count():
+        select.select_option(label=label)
+        return
+    found.locator("button.rc-choice").filter(has_text=re.compile(f"^{re.escape(label)}$")).click()
+
+
+def click(page, key: str, scope: str = NOTEBOOK) -> None:  # type: ignore[no-untyped-def]
+    """Click form button ``key`` (or tick checkbox control ``key``)."""
+    found = control(page, key, scope)
+    reveal(found)
+    found.click()
+
+
+def shown_value(page, key: str, scope: str = NOTEBOOK) -> str:  # type: ignore[no-untyped-def]
+    """What control ``key`` shows: a number's box, a dropdown's chosen option, a toggle's
+    chosen button."""
+    found = control(page, key, scope)
+    return str(
+        found.evaluate(
+            """(e) => {
+              const box = e.querySelector('input.rc-box');
+              if (box) return box.value;
+              const select = e.querySelector('select');
+              if (select) {
+                const option = select.options[select.selectedIndex];
+                return option ? option.text : '';
+              }
+              const chosen = e.querySelector('button.rc-chosen');
+              return chosen ? chosen.textContent : e.textContent;
+            }"""
+        )
+    )
+
+
+def ee_text(page, scope: str = NOTEBOOK) -> str:  # type: ignore[no-untyped-def]
+    """The panel's end-effector line, ``"p_EE = (70, 0, 20)"``."""
+    return str(page.locator(f"{scope} .robotconf-ee").first.inner_text()).strip()
+
+
+def ee_numbers(page, scope: str = NOTEBOOK) -> np.ndarray:  # type: ignore[no-untyped-def]
+    """The numbers of :func:`ee_text`, shape (3,)."""
+    text = ee_text(page, scope)
+    numbers = re.search(r"p_EE = \(([^)]*)\)", text)
+    assert numbers, text
+    return np.array([float(v) for v in numbers.group(1).split(",")])
+
+
+def output_text(page, cell: int) -> str:  # type: ignore[no-untyped-def]
+    """What cell ``cell`` (0-based) printed."""
+    return str(
+        page.locator(f"{NOTEBOOK} .jp-Cell").nth(cell).locator(".jp-OutputArea").inner_text()
+    )

@@ -27,7 +27,8 @@ from .paper_workflow import (
     wait_for_plot,
 )
 
-SLIDER = ".robotconf-module-q"
+#: The q controls of the module list (module 3's is the last).
+SLIDER = ".rc-control.robotconf-module-q"
 
 
 def _inside(inner: list[float], outer: list[float], tolerance: float = 1.0) -> bool:
@@ -58,7 +59,7 @@ def _view_and_slider_in_sight(page) -> str:  # type: ignore[no-untyped-def]
     assert slider is not None and scroller is not None and view is not None and canvas
     assert _inside(slider, scroller), (slider, scroller)
     assert _inside(canvas, scroller), ("3D view out of sight", canvas, scroller)
-    assert on_top(page, f"{SLIDER} .noUi-handle", 2), "the view covers the q3 slider"
+    assert on_top(page, f"{SLIDER} input.rc-slider", 2), "the view covers the q3 slider"
     if view[0] >= slider[2] - 1:
         return "beside"
     assert abs(view[1] - scroller[1]) <= 2, ("the view does not stick", view, scroller)
@@ -113,8 +114,8 @@ def test_paper_workflow_fits_and_keeps_the_robot_in_sight(lab: Lab, page) -> Non
     matrices = page.locator(".robotconf-matrices-tab")
     assert re.search(r"\bA3\b", matrices.inner_text()) and "A4" not in matrices.inner_text()
     controls = [
-        *matrices.locator(".widget-toggle-buttons button").all(),
-        *matrices.locator(".widget-checkbox input").all(),
+        *matrices.locator(".rc-toggle button.rc-choice").all(),
+        *matrices.locator(".rc-check input").all(),
     ]
     assert len(controls) == 4
     for control in controls:
