@@ -84,7 +84,7 @@ def interactions(panel: Configurator) -> dict[str, tuple[float, float]]:
     times["preset"] = percentiles(
         lambda i: user(panel, "preset").choose(presets[i % 2]), samples=40, warm=2
     )
-    units = ("rad", "deg")
+    units = ("rad", "deg")  # the toggle's labels
     times["unit switch"] = percentiles(
         lambda i: user(panel, "angle_unit").choose(units[i % 2]), samples=40, warm=2
     )

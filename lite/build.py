@@ -39,10 +39,9 @@ KERNELSPEC = {"name": "python", "display_name": "Python (Pyodide)", "language": 
 
 INSTALL_CELL_ID = "robotconf-lite-install"
 
-#: First cell of every notebook in the site. piplite finds these packages among the
-#: site's wheels. meshcat goes first and without its dependencies: robotconf reads only
-#: its bundled viewer JavaScript, and its server's pyzmq does not exist for Pyodide. Once
-#: meshcat is installed, installing robotconf leaves it (and its dependencies) alone.
+#: First cell of every notebook in the site. piplite finds robotconf and its dependencies
+#: among the site's wheels and Pyodide's packages (robotconf's wheel carries meshcat's 3D
+#: viewer itself: meshcat's server, whose pyzmq does not exist for Pyodide, is not needed).
 INSTALL_CELL = """\
 # Python in the browser (JupyterLite): install robotconf from the wheels of this site.
 # Elsewhere (JupyterLab, VS Code, ...) this cell does nothing.
@@ -51,7 +50,6 @@ import sys
 if sys.platform == "emscripten":
     import piplite
 
-    await piplite.install("meshcat", deps=False)
     await piplite.install("robotconf")"""
 
 #: The kernel-free demo page, at the top of the site's file browser.
@@ -124,7 +122,7 @@ def build_robotconf_wheel(dest: Path) -> None:
         source = Path(tmp) / "robotconf-src"
         junk = shutil.ignore_patterns("__pycache__", "*.pyc", ".ipynb_checkpoints")
         shutil.copytree(ROOT / "robotconf", source / "robotconf", ignore=junk)
-        for name in ("pyproject.toml", "README.md"):
+        for name in ("pyproject.toml", "setup.py", "README.md"):
             shutil.copy(ROOT / name, source / name)
         run(
             [

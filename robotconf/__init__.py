@@ -3,7 +3,8 @@
 ``import robotconf as rc`` gives the names a notebook needs, grouped by concept below. Each
 lives in a folder of its own (docs/architecture.md): :mod:`robotconf.kinematics`,
 :mod:`robotconf.signals`, :mod:`robotconf.motion`, :mod:`robotconf.inverse_kinematics`
-(``rc.ik``, ``rc.ik_all``), :mod:`robotconf.programs`,
+(``rc.ik``, ``rc.ik_all``), :mod:`robotconf.calibration` (``rc.locate_frame``,
+``rc.calibrate``), :mod:`robotconf.programs`, :mod:`robotconf.cell` (``rc.Cell``),
 :mod:`robotconf.teaching`, :mod:`robotconf.io`, :mod:`robotconf.presets`,
 :mod:`robotconf.plots`, and the presentation layers :mod:`robotconf.scene`,
 :mod:`robotconf.panel` and :mod:`robotconf.grading`. Importing the
@@ -25,8 +26,10 @@ from . import presets, signals
 from ._budget import memory_budget, set_memory_budget
 from ._errors import InvalidInputError
 from ._validation import check_finite_number, check_joint_values, check_vector3
+from .calibration import Calibration, FrameFit, calibrate, locate_frame
+from .cell import Box, Cell, Cylinder, Mesh, Sphere, Tool, pose
 from .inverse_kinematics import IKResult, IKSolutions, ik, ik_all
-from .io import Setup, load, load_setup, to_urdf
+from .io import Setup, load, load_cell, load_program, load_setup, to_urdf
 from .kinematics import (
     DH_CONVENTIONS,
     JOINT_TYPES,
@@ -172,6 +175,11 @@ __all__ = [
     "ik_all",
     "IKResult",
     "IKSolutions",
+    # calibration
+    "locate_frame",
+    "FrameFit",
+    "calibrate",
+    "Calibration",
     # robot programs
     "Program",
     "PTP",
@@ -181,9 +189,19 @@ __all__ = [
     "ProgramMotion",
     "ProgramReport",
     "Violation",
+    # the work cell
+    "Cell",
+    "pose",
+    "Box",
+    "Cylinder",
+    "Sphere",
+    "Mesh",
+    "Tool",
+    "load_cell",
     # files and presets
     "load",
     "load_setup",
+    "load_program",
     "Setup",
     "to_urdf",
     "preset",

@@ -45,7 +45,7 @@ def test_the_report_runs_the_program_and_lists_its_moves(tmp_path, capsys):
     # The DVA table spans the program: 0 … its duration, every 0.01 s and its end.
     times = _times(out / "dva.csv")
     assert times[0] == 0.0 and times[-1] == pytest.approx(program.duration, abs=1e-12)
-    again = rc.Program.from_json((out / "program.json").read_text())
+    again = rc.load_program(out / "program.json")
     assert again.moves == program.moves
     summary = (out / "report.md").read_text()
     assert "Program: 3 moves" in summary and "Check: no violations" in summary

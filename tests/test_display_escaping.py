@@ -210,12 +210,13 @@ def test_scene_labels_arrive_as_the_literal_names(scene_page):
     assert [*HOSTILE, "EE"] == texts[-len(HOSTILE) - 1 :]
 
 
-def test_scene_labels_are_drawn_on_a_canvas_not_parsed_as_html():
-    glue = resources.files("robotconf.scene").joinpath("js/glue.js").read_text(encoding="utf-8")
-    assert "ctx.fillText(text," in glue
+def test_scene_labels_are_written_as_text_not_parsed_as_html():
+    folder = resources.files("robotconf.scene").joinpath("js")
+    labels = folder.joinpath("labels.js").read_text(encoding="utf-8")
+    assert 'entry.el.textContent = entry.lines.join("\\n")' in labels
     sources = "".join(
-        resources.files("robotconf.scene").joinpath(f"js/{name}.js").read_text(encoding="utf-8")
-        for name in ("glue", "loader", "widget")
+        folder.joinpath(name).read_text(encoding="utf-8")
+        for name in sorted(p.name for p in folder.iterdir() if p.name.endswith(".js"))
     )
     # The only HTML ever assigned is the empty string (clearing a pane).
     assignments = re.findall(r"(?:innerHTML|outerHTML)\s*=\s*([^;]*);", sources)

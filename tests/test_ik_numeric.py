@@ -221,12 +221,16 @@ def test_2r_target_in_the_hole() -> None:
 
 def test_target_off_the_plane_of_a_planar_arm() -> None:
     # (2.5, 0, 1) is inside the reach sphere (|p| = 2.69 < 3), but a planar arm stays in
-    # z = 0: the closest point it reaches is (2.5, 0, 0), exactly 1 away.
+    # z = 0: the closest point it reaches is (2.5, 0, 0), exactly 1 away — proved by the
+    # plane its parallel axes keep it in.
     result = ik(two_r(), [2.5, 0.0, 1.0])
     assert result.reason == "unreachable"
-    assert result.distance_to_reach == pytest.approx(1.0, abs=1e-9)
-    assert np.allclose(two_r().end_effector(result.q), [2.5, 0.0, 0.0], atol=1e-7)
-    assert "misses it by 1 in position" in result.message
+    assert result.distance_to_reach == pytest.approx(1.0, abs=1e-12)
+    assert np.allclose(two_r().end_effector(result.q), [2.5, 0.0, 0.0], atol=1e-9)
+    assert result.position_error == pytest.approx(1.0, abs=1e-12)
+    assert "the target is 1 out of reach" in result.message
+    assert "in the plane at height 0 along (0, 0, 1), 1 to 3 from joint 1's axis" in result.message
+    assert "(1 off that plane)" in result.message
 
 
 def test_errors_of_rows_left_out_are_nan() -> None:
@@ -252,23 +256,51 @@ def test_reach_shell_holds_every_preset() -> None:
     assert (shell.inner, shell.outer) == (1.0, 3.0)
 
 
-def test_stretched_2r_is_singular_from_one_start() -> None:
+def test_a_start_on_a_singular_saddle_is_left_along_its_negative_curvature() -> None:
     # Straight out (q = 0) the EE is at (3, 0, 0); (2.5, 0, 0) is along the arm, and both
-    # Jacobian columns point along y there: no step can move along x.
+    # Jacobian columns point along y there: no least-squares step moves along x. Folding
+    # the elbow brings the end closer, a direction of negative curvature of the error,
+    # which the second-order descent follows: one start suffices.
     robot = two_r()
-    stuck = ik(robot, [2.5, 0.0, 0.0], q0=[0.0, 0.0], seeds=1)
-    assert stuck.reason == "singular"
-    assert "joints 1 and 2" in stuck.message
-    assert np.array_equal(stuck.q, [0.0, 0.0])
-    assert stuck.distance_to_reach == 0.0
-    # With random restarts the same target is solved.
-    assert ik(robot, [2.5, 0.0, 0.0], q0=[0.0, 0.0]).reason == "converged"
+    found = ik(robot, [2.5, 0.0, 0.0], q0=[0.0, 0.0], seeds=1)
+    assert found.reason == "converged"
+    # 2.5² = 2² + 1² + 2·2·1·cos q2: cos q2 = 1.25 / 4.
+    assert abs(found.q[1]) == pytest.approx(np.arccos(1.25 / 4), abs=1e-9)
 
 
-def test_puma_wrist_singularity_names_joints_4_and_6() -> None:
+def test_singular_configurations_name_their_joints() -> None:
+    # The words behind the reason "singular" (what remains when the descent runs out of
+    # steps at a singular configuration that is not a closest one).
+    from robotconf.inverse_kinematics._reasons import dependent_joints, singular_message
+
+    stretched = two_r()
+    problem = make_problem(
+        stretched,
+        check_targets([2.5, 0.0, 0.0], "position"),
+        np.ones(6) * [1, 1, 1, 0, 0, 0],
+        TOL,
+        1.0,
+    )
+    q = np.zeros((1, 2))
+    jacobian = problem.expand(problem.jacobian_at(np.arange(1), q))[0]
+    joints, aligned = dependent_joints(problem, jacobian, stretched.jacobian(q[0]))
+    assert joints == [0, 1] and not aligned
+    assert "joints 1 and 2 are dependent" in singular_message(joints, aligned)
+    puma = preset("puma560")
+    q = np.array([[0.3, 0.5, -0.8, 0.4, 0.0, 0.2]])  # q5 = 0: axes 4 and 6 in line
+    target = check_targets(puma.end_effector_pose(q[0]), "pose")
+    problem = make_problem(puma, target, np.ones(6), TOL, ORIENTATION_TOL)
+    jacobian = problem.expand(problem.jacobian_at(np.arange(1), q))[0]
+    joints, aligned = dependent_joints(problem, jacobian, puma.jacobian(q[0]))
+    assert joints == [3, 5] and aligned
+    assert "joints 4 and 6 are aligned" in singular_message(joints, aligned)
+
+
+def test_puma_wrist_singularity_is_left_by_the_descent() -> None:
     # q5 = 0: joints 4 and 6 turn about the same line. The target is moved along the
     # direction the Jacobian cannot produce (its left null vector, in the solver's units),
-    # so the error is orthogonal to every joint motion.
+    # so the error is orthogonal to every joint motion: least squares cannot move, the
+    # second-order descent bends the wrist and reaches it from this one start.
     robot = preset("puma560")
     q = np.array([0.3, 0.5, -0.8, 0.4, 0.0, 0.2])
     size = characteristic_length(robot)
@@ -280,8 +312,8 @@ def test_puma_wrist_singularity_names_joints_4_and_6() -> None:
     target[:3, 3] += 1e-3 * size * u[:3]
     target[:3, :3] = rotation_matrix(1e-3 * u[np.newaxis, 3:])[0] @ pose[:3, :3]
     result = ik(robot, target, q0=q, mode="pose", seeds=1)
-    assert result.reason == "singular"
-    assert "joints 4 and 6 are aligned" in result.message
+    assert result.reason == "converged"
+    check_solutions(robot, result, target, "pose")
 
 
 def test_joint_limit_names_the_joint() -> None:
@@ -297,12 +329,16 @@ def test_joint_limit_names_the_joint() -> None:
     assert free.reason == "converged" and abs(abs(free.q[1]) - 1.0) <= 1e-8
 
 
-def test_prismatic_joint_limit() -> None:
-    # Cylindrical robot: height = 20 + q2, stroke 0…40; a target at height 65 needs q2 = 45.
+def test_prismatic_stroke_proves_a_target_out_of_reach() -> None:
+    # Cylindrical robot: height = 20 + q2, stroke 0…40, so its end effector stays between
+    # heights 20 and 60; a target at height 65 is 5 out of reach, proved (its turn about
+    # z keeps every height).
     robot = preset("cylindrical")
     result = ik(robot, [20.0, 0.0, 65.0])
-    assert result.reason == "joint limit"
-    assert "joint 2 (q2) at 45, past its upper limit 40" in result.message
+    assert result.reason == "unreachable" and result.distance_to_reach == 5.0
+    assert "between heights 20 and 60 along (0, 0, 1)" in result.message
+    assert "(5 off those heights)" in result.message
+    assert result.position_error == pytest.approx(5.0, abs=1e-9)
 
 
 def test_orientation_out_of_reach_of_a_planar_arm() -> None:
@@ -335,11 +371,12 @@ def test_tolerance_below_rounding_and_few_iterations() -> None:
     short = ik(robot, target, mode="pose", max_iterations=2, seeds=1)
     assert short.reason == "iteration limit" and "within 2 iterations" in short.message
     # Iterations add up over runs: 2 steps within the ranges, then 2 more from the same
-    # start without them (the PUMA has clipped joints; the UR5's all wrap, so it has one run).
-    assert short.iterations == 4
+    # start without them (the PUMA has clipped joints; the UR5's all wrap, so it has one
+    # run), then 2 of the second-order descent from the closest of them.
+    assert short.iterations == 6
     ur5 = preset("ur5")
     ur5_target = ur5.end_effector_pose([0.1, 0.2, -0.3, 0.4, 0.5, 0.6])
-    assert ik(ur5, ur5_target, mode="pose", max_iterations=2, seeds=1).iterations == 2
+    assert ik(ur5, ur5_target, mode="pose", max_iterations=2, seeds=1).iterations == 2 + 2
 
 
 # -- vectorization ----------------------------------------------------------------------------
@@ -464,24 +501,27 @@ def test_the_solvers_rotation_vector_agrees_with_the_kinematics_one() -> None:
 def one_after_another(
     problem: Problem, first: np.ndarray, draws: np.ndarray, proved: np.ndarray, iterations: int
 ) -> Search:
-    """Reference: each target's runs in the documented order, one run at a time."""
+    """Reference: each target's runs in the documented order, one run at a time: q0, then
+    the random starts nearest first (ranked by the pose each leaves, computed here)."""
     state = Search.begin(problem, first, True)
-    starts = [first] + [np.tile(d, (len(first), 1)) for d in draws]
-    runs = [(k, False) for k in range(len(starts))] + [(k, True) for k in range(len(starts))]
     for i in range(len(first)):
         one = np.array([i])
+        pose = problem.robot.end_effector_pose(problem.project(draws, False))
+        energy = problem.energy(problem.errors_from_pose(np.full(len(draws), i), pose))
+        starts = [first[i]] + [draws[k] for k in np.argsort(energy, kind="stable")]
+        runs = [(k, False) for k in range(len(starts))] + [(k, True) for k in range(len(starts))]
         for k, free in runs:
-            if state.status[i] == CONVERGED or (proved[i] and (k > 0 or free)):
-                break
-            run = solve(problem, one, starts[k][one], iterations, not free)
+            if state.status[i] == CONVERGED or proved[i]:
+                break  # a target proved out of reach is left to the closest-point descent
+            run = solve(problem, one, starts[k][np.newaxis], iterations, not free)
             (state.read_free if free else state.read_limited)(one, run)
     return state
 
 
 def test_waves_read_the_runs_in_their_documented_order(monkeypatch: pytest.MonkeyPatch) -> None:
-    # A PUMA whose shoulder may only turn 0.4 rad: many targets need a second start, a
+    # A PUMA whose shoulder may only turn 0.8 rad: many targets need a second start, a
     # run without the ranges, or end past a joint limit; two are far out of reach.
-    robot = preset("puma560").with_limits(1, (0.2, 0.6))
+    robot = preset("puma560").with_limits(1, (0.2, 1.0))
     target = robot.end_effector_pose(random_q(preset("puma560"), 16, seed=4))
     target[:2, :3, 3] *= 3.0
     problem = pose_problem(robot, target)
@@ -496,7 +536,7 @@ def test_waves_read_the_runs_in_their_documented_order(monkeypatch: pytest.Monke
         for field in ("q", "error", "status", "iterations", "starts", "outside", "outside_q"):
             assert np.array_equal(getattr(found, field), getattr(reference, field)), field
     assert 0 < np.sum(found.status == CONVERGED) < 14 and found.outside.any()
-    assert np.all(found.starts[:2] == 1) and np.all(found.starts[2:] >= 1)
+    assert np.all(found.starts[:2] == 0) and np.all(found.starts[2:] >= 1)
 
 
 def test_runs_of_one_target_race_without_changing_each_other() -> None:

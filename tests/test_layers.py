@@ -4,6 +4,9 @@ The rules (docs/architecture.md draws them):
 
 - no import cycle among modules at module level (``if TYPE_CHECKING:`` imports count:
   a cycle there is a knot in the design even if Python never runs it);
+- no loop between folders, counting imports inside functions too (two folders of one
+  layer that import each other, even lazily, are one concept in two places); only the
+  lazy accessors below may point back;
 - each folder imports at module level only folders of a lower layer (or itself);
 - an import that climbs a layer sits inside a function, and only in the lazy accessors
   listed in :data:`LAZY_ACCESSORS`;
@@ -28,8 +31,10 @@ PACKAGE = Path(__file__).resolve().parents[1] / "robotconf"
 LAYERS: tuple[tuple[str, ...], ...] = (
     ("_base",),
     ("kinematics", "signals"),
-    ("motion", "inverse_kinematics"),
-    ("io", "teaching", "presets", "programs"),
+    ("motion", "inverse_kinematics", "calibration"),
+    ("teaching", "presets", "programs"),
+    ("cell",),
+    ("io",),
     ("plots",),
     ("scene",),
     ("panel", "cli", "grading", "report"),
@@ -46,6 +51,8 @@ LAZY_ACCESSORS = {
     "robotconf.kinematics._robot:from_json": "robotconf.io",
     "robotconf.kinematics._robot:save": "robotconf.io",
     "robotconf.kinematics._robot:to_urdf": "robotconf.io",
+    "robotconf.cell._cell:to_json": "robotconf.io",
+    "robotconf.cell._cell:save": "robotconf.io",
     "robotconf.kinematics._workspace:plot": "robotconf.plots",
     "robotconf.kinematics._workspace:view": "robotconf.scene",
     "robotconf.motion._motion:plot": "robotconf.plots",
@@ -222,6 +229,34 @@ def test_no_module_level_import_cycle():
     assert cycles == []
 
 
+def _folder_loops(imports: list[Import]) -> list[list[str]]:
+    """Loops in the graph of folders, from every import (lazy ones too) but the accessors."""
+    graph: dict[str, set[str]] = {}
+    for imp in imports:
+        key = f"{imp.source}:{imp.function}"
+        if LAZY_ACCESSORS.get(key) == ".".join(imp.target.split(".")[:2]):
+            continue
+        source, target = _layer_name(imp.source), _layer_name(imp.target)
+        if source != target:
+            graph.setdefault(source, set()).add(target)
+    loops = []
+    for start in sorted(graph):
+        # Depth-first from each folder; a path back to it is a loop (folders are few).
+        stack = [(start, [start])]
+        while stack:
+            node, path = stack.pop()
+            for nxt in sorted(graph.get(node, ())):
+                if nxt == start:
+                    loops.append(path)
+                elif nxt not in path and nxt > start:
+                    stack.append((nxt, [*path, nxt]))
+    return loops
+
+
+def test_no_import_loop_between_folders():
+    assert _folder_loops(INTERNAL) == []
+
+
 def _climbing_down_violations(imports: list[Import]) -> list[str]:
     return [
         _where(imp)
@@ -297,6 +332,16 @@ def test_the_core_imports_only_numpy_at_module_level():
 def test_each_rule_catches_a_planted_import(code, check):
     probe = PACKAGE / "motion" / "_probe.py"  # read as text only; never written
     assert check(_imports(probe, code))
+
+
+def test_a_loop_between_folders_of_one_layer_is_caught():
+    # programs and presets share a layer; a lazy import each way is a loop.
+    there = _imports(
+        PACKAGE / "programs" / "_probe.py", "def f():\n    from ..presets import preset\n"
+    )
+    back = _imports(PACKAGE / "presets" / "_probe.py", "def g():\n    from ..programs import PTP\n")
+    assert _folder_loops(there + back) == [["presets", "programs"]]
+    assert _folder_loops(there) == []
 
 
 #: Inside the panel, the state and its actions are plain values: they import no widget

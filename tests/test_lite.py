@@ -178,14 +178,12 @@ def test_every_notebook_opens_with_the_install_cell(site: Path, build_script: Mo
         assert [c.source for c in rest] == [c.source for c in source.cells], path
 
 
-def test_install_cell_installs_meshcat_alone_first_and_is_a_no_op_elsewhere(
+def test_install_cell_installs_robotconf_and_is_a_no_op_elsewhere(
     build_script: ModuleType,
 ) -> None:
     cell = build_script.INSTALL_CELL
-    # meshcat first and without dependencies: installing robotconf then finds it present
-    # and leaves its dependencies (pyzmq, tornado: no Pyodide build) alone.
-    meshcat = cell.index('piplite.install("meshcat", deps=False)')
-    assert meshcat < cell.index('piplite.install("robotconf")')
+    # robotconf's wheel carries the 3D viewer: meshcat (and its pyzmq) is not installed.
+    assert 'piplite.install("robotconf")' in cell and "meshcat" not in cell
     # Valid IPython (top-level await), and nothing happens outside the browser.
     code = compile(cell, "<install cell>", "exec", flags=ast.PyCF_ALLOW_TOP_LEVEL_AWAIT)
     namespace: dict = {}
@@ -224,7 +222,8 @@ def test_robotconf_wheel_in_the_site_holds_every_runtime_file(site: Path) -> Non
     }
     # JupyterLab (a server) cannot install in the browser: it must be an extra, not a need.
     assert "jupyterlab" not in requires, sorted(requires)
-    assert "meshcat" in requires  # the first cell installs it without its dependencies
+    assert "meshcat" not in requires  # its viewer is in the wheel; its server is not needed
+    assert "robotconf/scene/js/meshcat/main.min.js" in names
 
 
 def site_index(site: Path) -> dict[str, dict[Version, Path]]:
@@ -255,10 +254,9 @@ def test_every_runtime_dependency_comes_from_the_site_or_pyodide(site: Path) -> 
     """Resolve the first cell's installs as micropip does; nothing may need PyPI."""
     index = site_index(site)
     pyodide = {name: Version(v) for name, v in PYODIDE_PACKAGES.items()}
-    installed: dict[str, str] = {"meshcat": "site, without dependencies"}
+    installed: dict[str, str] = {}
     todo = [Requirement("robotconf")]
     unmet: list[str] = []
-    assert "meshcat" in index, "the site must serve meshcat's wheel"
     while todo:
         req = todo.pop()
         name = canonicalize_name(req.name)
@@ -284,6 +282,7 @@ def test_every_runtime_dependency_comes_from_the_site_or_pyodide(site: Path) -> 
             unmet.append(f"{req} (gets {version})")
     assert not unmet, f"would come from PyPI or not install at all: {unmet}; have {installed}"
     assert {"numpy", "anywidget", "ipywidgets", "robotconf"} <= set(installed), installed
+    assert not {"meshcat", "pyzmq", "tornado"} & set(installed), installed
 
 
 def test_scene_page_is_self_contained(site: Path) -> None:

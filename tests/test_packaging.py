@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import configparser
 import importlib
+import json
 import os
 import re
 import shutil
@@ -41,6 +42,11 @@ RUNTIME_FILES = (
     "robotconf/scene/js/glue.js",
     "robotconf/scene/js/loader.js",
     "robotconf/scene/js/widget.js",
+    "robotconf/scene/js/labels.js",
+    "robotconf/scene/js/player.js",
+    "robotconf/scene/js/bar.js",
+    "robotconf/scene/js/mount.js",
+    "robotconf/panel/form/js/controls.js",
     "robotconf/panel/form/js/form.js",
     "robotconf/panel/form/js/form.css",
 )
@@ -181,6 +187,38 @@ def test_wheel_builds_without_warnings_and_names_its_license(
     assert "License-Expression: MIT" in metadata.splitlines(), metadata[:800]
 
 
+#: What meshcat's Python package would bring (its ZeroMQ server): robotconf never runs it,
+#: so an install of robotconf must not hold any of these.
+MESHCAT_SERVER_STACK = ("meshcat", "pyzmq", "tornado", "pyngrok", "pyyaml", "u-msgpack-python")
+
+
+def test_wheel_carries_meshcats_viewer_byte_for_byte_and_needs_no_meshcat(
+    built_wheel: Path,
+) -> None:
+    viewer = Path(importlib.import_module("meshcat").__file__ or "").parent / "viewer"
+    with zipfile.ZipFile(built_wheel) as wheel:
+        bundle = wheel.read("robotconf/scene/js/meshcat/main.min.js")
+        license_text = wheel.read("robotconf/scene/js/meshcat/LICENSE").decode("utf-8")
+        metadata_name = next(n for n in wheel.namelist() if n.endswith(".dist-info/METADATA"))
+        metadata = wheel.read(metadata_name).decode("utf-8")
+    assert bundle == (viewer / "dist" / "main.min.js").read_bytes()
+    assert "MIT" in license_text or "Permission is hereby granted" in license_text
+    requires = [line.split(":", 1)[1].strip() for line in metadata.splitlines()
+                if line.startswith("Requires-Dist:") and "extra ==" not in line]  # fmt: skip
+    names = {re.split(r"[ <>=!;\[(]", r, maxsplit=1)[0].lower() for r in requires}
+    assert not names & set(MESHCAT_SERVER_STACK), sorted(names)
+
+
+def test_every_runtime_requirement_is_used_by_the_package() -> None:
+    """A dependency robotconf never imports (or names, as pandas' Excel engine) is weight."""
+    project = tomllib.loads((ROOT / "pyproject.toml").read_text("utf-8"))["project"]
+    sources = "\n".join(p.read_text("utf-8") for p in (ROOT / PACKAGE).rglob("*.py"))
+    for requirement in project["dependencies"]:
+        name = re.split(r"[ <>=!;\[]", requirement, maxsplit=1)[0].replace("-", "_")
+        used = rf"^\s*(import|from) {name}\b|[\"']{name}[\"']"
+        assert re.search(used, sources, re.MULTILINE), f"{requirement}: never imported"
+
+
 def test_the_build_backend_is_pinned() -> None:
     """A build next year gets a setuptools this project was built with, not a newer major."""
     requires = tomllib.loads((ROOT / "pyproject.toml").read_text("utf-8"))["build-system"]
@@ -236,6 +274,10 @@ def test_wheel_installs_and_runs_in_a_fresh_venv(built_wheel: Path, tmp_path: Pa
     smoke = run([python, "-I", script, venv, html_path], timeout=300, cwd=work)
     assert smoke.stdout.startswith("smoke ok"), smoke.stdout
     assert html_path.stat().st_size > 500_000
+
+    installed = run([python, "-m", "pip", "list", "--format=json"], timeout=120).stdout
+    names = {package["name"].lower() for package in json.loads(installed)}
+    assert not names & set(MESHCAT_SERVER_STACK), sorted(names & set(MESHCAT_SERVER_STACK))
 
     console = run([bin_dir / "robotconf", "--help"], timeout=120, cwd=work)
     assert "usage: robotconf" in console.stdout and "report" in console.stdout, console.stdout

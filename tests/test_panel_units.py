@@ -192,3 +192,36 @@ def test_ten_unit_switches_change_no_number():
         ui(panel, "angle_unit").choose(degrees)
         assert panel.state.document is document
     assert panel.robot.q[1] == np.radians(34.4)
+
+
+def test_messages_speak_the_panels_units():
+    from robotconf.panel import actions as act
+
+    panel = make_panel(length_unit="mm")
+    panel.apply(act.SelectTab("program"))
+    ui(panel, "modules[1].q").type("200")  # beyond q2's range of ±180°
+    ui(panel, "program.add").click()
+    ui(panel, "modules[1].q").type("0")
+    ui(panel, "program.add").click()
+    ui(panel, "program.run").click()
+    texts = [
+        c["value"]
+        for r in panel.program_tab.form.spec["rows"]
+        for line in r.get("lines", [])
+        for c in line
+        if c.get("type") == "text" and "move 1 (PTP)" in c.get("value", "")
+    ]
+    # The core says [-3.14159, 3.14159] rad and 0.3491 rad: 20° = 0.349 rad beyond π.
+    assert texts == [
+        "⚠ move 1 (PTP): q2 leaves its range [-180, 180] deg at t = 3.4 s "
+        "(by up to 20 deg, at t = 3.99 s)"
+    ]
+    ui(panel, "angle_unit").choose("rad")
+    texts = [
+        c["value"]
+        for r in panel.program_tab.form.spec["rows"]
+        for line in r.get("lines", [])
+        for c in line
+        if c.get("type") == "text" and "move 1 (PTP)" in c.get("value", "")
+    ]
+    assert "[-3.14159, 3.14159] rad" in texts[0] and "0.3491 rad" in texts[0]

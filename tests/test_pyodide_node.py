@@ -202,12 +202,11 @@ def test_numpy_free_modules_import_and_pass_their_doctests_in_pyodide(tmp_path: 
     for init in emptied:
         copy = source / init.relative_to(ROOT)
         copy.write_text('"""Emptied for the Pyodide check: it imports numpy."""\n', "utf-8")
-    # Beside the package, as the site installs them: the course (its lessons are listed
-    # by the grading tools) and meshcat's package, read as files only (the 3D viewer).
+    # Beside the package, as in a checkout: the course (the grading tools list its lessons).
     shutil.copytree(ROOT / "course", source / "course")
     # sympy (and its mpmath) are pure Python: several checks use them inside functions.
     # Pyodide ships sympy 1.13.3 in its full distribution; here, the test's own copy.
-    for name in ("sympy", "mpmath", "meshcat"):
+    for name in ("sympy", "mpmath"):
         folder = Path(importlib.import_module(name).__file__ or "").parent
         shutil.copytree(folder, source / name, ignore=shutil.ignore_patterns("__pycache__"))
     script = tmp_path / "driver.py"

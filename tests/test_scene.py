@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import re
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -78,7 +79,7 @@ def test_spheres_sit_at_the_core_positions(scene: Scene, paper_robot: rc.Robot) 
 
 def test_objects_are_created_once_and_update_sends_only_transforms(scene: Scene) -> None:
     created = [c["path"] for c in scene.channel.commands("set_object")]
-    assert len(created) == len(set(created)) == len(scene._drawing.items)
+    assert len(created) == len(set(created)) == len(scene._robot.drawing.items)
     scene.channel.clear()
     for k in range(5):
         scene.update([0.1 * k, 0.2, -0.3])
@@ -106,7 +107,7 @@ def test_drawn_items_follow_the_paper_figure(paper_robot: rc.Robot) -> None:
 def test_prismatic_joints_are_boxes_and_grow_with_q() -> None:
     robot = rc.preset("cartesian")
     scene = Scene(robot, channel=RecordingChannel())
-    shapes = {item.path: item.shape for item in scene._drawing.items}
+    shapes = {item.path: item.shape for item in scene._robot.drawing.items}
     assert [shapes[f"modules/{i}/joint"] for i in range(3)] == ["box", "box", "box"]
     scene.update([0.0, 0.0, 0.0])
     short = _transforms(scene)[f"{ROBOT_PATH}/modules/2/joint"]
@@ -143,16 +144,26 @@ def test_frames_and_labels_toggle_visibility(scene: Scene) -> None:
     scene.channel.clear()
     scene.show_frames(True)
     scene.show_labels(False)
-    ops = scene.channel.ops
+    ops = [op for op in scene.channel.ops if op.content["op"] == "visible"]
     assert [op.content["value"] for op in ops] == [True, False]
     assert all(p.endswith("/frame") for p in ops[0].content["paths"])
     assert all(p.endswith("/label") for p in ops[1].content["paths"])
+    # The page's bar shows what the kernel holds now.
+    options = [op.content for op in scene.channel.ops if op.content["op"] == "options"]
+    assert options[-1] == {
+        "op": "options",
+        "labels": "off",
+        "frames": True,
+        "trace": False,
+        "controls": True,
+    }
+    assert (scene.label_mode, scene.frames_shown) == ("off", True)
 
 
 def test_scene_log_replays_compactly(scene: Scene) -> None:
     for k in range(50):
         scene.update([0.01 * k, 0.0, 0.0])
-    ops = scene._log.ops()
+    ops = scene._outbox.log.ops()
     assert sum(op.content["op"] == "transforms" for op in ops) == 1
     assert sum(op.content["op"] == "labels" for op in ops) == 1
     replayed = _transforms_from(ops)
@@ -166,10 +177,10 @@ def test_scene_log_keeps_every_packed_object(scene: Scene) -> None:
     scene.add_point_cloud("first", np.zeros((3, 3)))
     scene.add_point_cloud("second", np.ones((3, 3)))
     replay = RecordingChannel()
-    replay.send(scene._log.ops())
+    replay.send(scene._outbox.log.ops())
     created = {c["path"] for c in replay.commands("set_object")}
     assert {f"{ROOT}/clouds/first", f"{ROOT}/clouds/second"} <= created
-    assert created >= {f"{ROBOT_PATH}/{item.path}" for item in scene._drawing.items}
+    assert created >= {f"{ROBOT_PATH}/{item.path}" for item in scene._robot.drawing.items}
 
 
 def _transforms_from(ops) -> dict[str, np.ndarray]:  # type: ignore[no-untyped-def]
@@ -238,10 +249,22 @@ def test_animation_tracks_follow_the_motion(scene: Scene, paper_robot: rc.Robot)
     command = scene.channel.commands("set_animation")[-1]
     by_path = {a["path"]: a["clip"] for a in command["animations"]}
     tracks = {t["name"]: t for t in by_path[f"{ROBOT_PATH}/ee/sphere"]["tracks"]}
-    assert tracks[".position"]["times"] == [0.0, 0.25, 0.5, 0.75, 1.0]  # halved by speed 2
-    positions = np.array(tracks[".position"]["values"]).reshape(-1, 3)
-    np.testing.assert_allclose(positions, motion.position[:, -1], atol=1e-5)
-    assert scene.channel.ops[-2].content["texts"] == ["M1", "M2", "M3", "EE"]
+    # Motion seconds (float32 bytes, as the viewer decodes them into a Float32Array): the
+    # page's player plays them at speed 2.
+    times = np.frombuffer(tracks[".position"]["times"].data, dtype=np.float32)
+    assert times.tolist() == [0.0, 0.5, 1.0, 1.5, 2.0]
+    assert command["options"] == {"play": False, "repetitions": 1}  # the page plays it
+    (load,) = [op.content for op in scene.channel.ops if op.content["op"] == "playback"]
+    assert (load["action"], load["speed"], load["duration"], load["playing"]) == (
+        "load",
+        2.0,
+        2.0,
+        True,
+    )
+    positions = np.frombuffer(tracks[".position"]["values"].data, dtype=np.float32)
+    np.testing.assert_allclose(positions.reshape(-1, 3), motion.position[:, -1], rtol=1e-6)
+    labels = [op.content for op in scene.channel.ops if op.content["op"] == "labels"]
+    assert labels[-1]["texts"] == ["M1", "M2", "M3", "EE"]
     with pytest.raises(rc.InvalidInputError, match="speed: must be positive: 0.0"):
         scene.animate(motion, speed=0)
     with pytest.raises(rc.InvalidInputError, match="speed: a boolean is not a number"):
@@ -257,7 +280,7 @@ def test_point_cloud_is_packed_and_validated(scene: Scene) -> None:
 
     points = np.random.default_rng(1).random((20, 3))
     scene.add_point_cloud("workspace", points)
-    op = scene.channel.ops[-1]
+    (op,) = [op for op in scene.channel.ops if op.content["op"] == "packed"][-1:]
     command = msgpack.unpackb(op.buffers[0])
     assert command["type"] == "set_object" and command["path"].endswith("clouds/workspace")
     position = command["object"]["geometries"][0]["data"]["attributes"]["position"]
@@ -284,16 +307,25 @@ def test_export_html_is_self_contained(scene: Scene, tmp_path) -> None:  # type:
     assert json.loads(log)["ops"]
 
 
-def test_viewer_bundle_comes_from_the_meshcat_package_or_says_how_to_install_it(
-    monkeypatch: pytest.MonkeyPatch,
+def test_viewer_bundle_is_robotconfs_copy_else_meshcats_else_says_how_to_get_it(
+    monkeypatch: pytest.MonkeyPatch, tmp_path: Path
 ) -> None:
     from robotconf.scene import _assets
 
+    # The build's copy (an installed wheel, or this editable checkout once built).
+    copy = tmp_path / "main.min.js"
+    copy.write_text("// viewer", encoding="utf-8")
+    monkeypatch.setattr(_assets, "PACKAGED", copy)
+    assert _assets.meshcat_bundle() == copy
+
+    # A source tree that was not built: an installed meshcat package, read as a file.
+    monkeypatch.setattr(_assets, "PACKAGED", tmp_path / "absent.js")
     bundle = _assets.meshcat_bundle()
     assert bundle.parts[-4:] == ("meshcat", "viewer", "dist", "main.min.js")
     assert bundle.stat().st_size > 500_000
+
     monkeypatch.setattr(_assets, "find_spec", lambda name: None)
-    with pytest.raises(RuntimeError, match=r"meshcat is not installed.*pip install meshcat"):
+    with pytest.raises(RuntimeError, match=r"not built.*Reinstall robotconf.*pip install meshcat"):
         _assets.meshcat_bundle()
 
 
@@ -360,10 +392,10 @@ def test_reload_after_animation_and_update_shows_the_current_pose(scene: Scene) 
     scene.update(q)
     # The live views drop the animation before taking the new transforms.
     kinds = [op.content["op"] for op in scene.channel.ops]
-    assert kinds[0] == "animation" and scene.channel.ops[0].content["action"] == "clear"
+    assert kinds[0] == "playback" and scene.channel.ops[0].content["action"] == "clear"
     assert kinds.index("transforms") > 0
     live = _transforms(scene)
-    assert len(live) == len(scene._drawing.paths)  # every item: the animation moved them all
+    assert len(live) == len(scene._robot.drawing.paths)  # every item: the animation moved them all
     # A new view gets no animation at all, and ends with the current transforms.
     replay = _replayed(scene)
     assert "set_animation" not in replay.kinds()
@@ -375,15 +407,18 @@ def test_reload_after_animation_and_update_shows_the_current_pose(scene: Scene) 
     assert replay.ops[-1].content["texts"][-1] == scene.labels()[-1]
 
 
-def test_reload_during_an_animation_loads_it_paused_before_the_pose(scene: Scene) -> None:
+def test_reload_during_an_animation_loads_it_after_the_pose(scene: Scene) -> None:
     scene.animate(_motion(scene.robot), play=True)
     replay = _replayed(scene)
     kinds = replay.kinds()
     animation = replay.commands("set_animation")[0]
     assert animation["options"]["play"] is False
-    # Loaded first, then the current transforms: the pose is the current q, not a frame.
-    assert kinds.index("set_animation") < kinds.index("transforms")
-    assert scene.channel.commands("set_animation")[-1]["options"]["play"] is True
+    # The current transforms first, then the animation and where its player stands: the
+    # new view shows the motion's frame, at the time the others show.
+    assert kinds.index("transforms") < kinds.index("set_animation") < kinds.index("playback")
+    load = replay.ops[-1].content
+    assert load["action"] == "load" and load["playing"] is True
+    assert 0.0 <= load["time"] < 0.5
 
 
 def test_update_sends_only_what_moved(scene: Scene) -> None:
@@ -402,7 +437,7 @@ def test_update_sends_only_what_moved(scene: Scene) -> None:
     # The log still holds the full state for a new view.
     replay = _replayed(scene)
     assert set(_transforms(type("H", (), {"channel": replay}))) == {
-        f"{ROBOT_PATH}/{p}" for p in scene._drawing.paths
+        f"{ROBOT_PATH}/{p}" for p in scene._robot.drawing.paths
     }
 
 
@@ -412,40 +447,31 @@ def test_coalescing_merges_partial_transforms_and_labels() -> None:
     from robotconf.scene._commands import command_op, labels_op
 
     delete = command_op({"type": "delete", "path": "/c"})
-    merged = coalesce_ops(
-        [a, labels_op(["/l"], ["x"], [0]), b, labels_op(["/l"], ["y"], [1]), delete, b]
-    )
+    merged = coalesce_ops([a, labels_op(["/l"], ["x"]), b, labels_op(["/l"], ["y"]), delete, b])
     assert [op.content["op"] for op in merged] == ["transforms", "labels", "command", "transforms"]
     data = np.frombuffer(merged[0].buffers[0], dtype=np.float32).reshape(-1, 4, 4)
     assert merged[0].content["paths"] == ["/a", "/b"] and data[1, 0, 0] == 3
-    assert merged[1].content["texts"] == ["y"] and merged[1].content["rows"] == [1]
+    assert merged[1].content == {"op": "labels", "paths": ["/l"], "texts": ["y"]}
 
 
-def test_labels_have_the_robots_precision_and_stack_when_close() -> None:
+def test_labels_have_the_robots_precision_and_merge_where_points_coincide() -> None:
     ur5 = Scene(rc.preset("ur5"), channel=RecordingChannel())
     # UR5 (1.19 m of links): centimetres, three significant digits of its size.
     assert re.fullmatch(r"EE \(-?\d\.\d\d, -?\d\.\d\d, -?\d\.\d\d\)", ur5.labels()[-1])
     scara = Scene(rc.preset("scara"), channel=RecordingChannel())
     labels = [op for op in scara.channel.ops if op.content["op"] == "labels"][-1].content
-    texts, rows = labels["texts"], labels["rows"]
-    # Coincident frames share one label; the others are empty (drawn as nothing).
-    assert texts == [
+    # Coincident frames share one label; the others are empty (drawn as nothing). Where
+    # the texts stand on screen (apart, with leader lines) is the page's work.
+    assert labels["texts"] == [
         "M1 (40.0, 0.0, 40.0)",
         "M2, M3 (70.0, 0.0, 40.0)",
         "",
         "M4, EE (70.0, 0.0, 30.0)",
         "",
     ]
-    # Every pair of shown labels closer than the spacing sits on different rows.
-    points = scara._drawing.label_points(scara.q)
-    spacing = 0.25 * scara._view_radius
-    for i in range(len(points)):
-        for j in range(i):
-            if texts[i] and texts[j] and np.linalg.norm(points[i] - points[j]) < spacing:
-                assert rows[i] != rows[j], (i, j)
-    assert rows[3] == 1  # 10 mm under M2, M3: stacked above it
     puma = Scene(rc.preset("puma560"), channel=RecordingChannel())
-    assert puma.channel.ops[-1].content["texts"][3].startswith("M4, M5, M6, EE (")
+    texts = [op for op in puma.channel.ops if op.content["op"] == "labels"][-1].content["texts"]
+    assert texts[3].startswith("M4, M5, M6, EE (")
 
 
 def test_fit_view_centres_the_robot_and_sets_the_distance(scene: Scene) -> None:
@@ -463,109 +489,8 @@ def test_fit_view_centres_the_robot_and_sets_the_distance(scene: Scene) -> None:
     points = np.vstack(
         [[0, 0, 0], scene.robot.frame_origins(scene.q), scene.robot.end_effector(scene.q)]
     )
-    size = scene._drawing.size
+    size = scene._robot.drawing.size
     centre = -centring["/meshcat"][:3, 3] * size
     radius = ops[-1].content["radius"] * size
     reach = np.linalg.norm(points - centre, axis=1).max()
     assert reach < radius < 1.3 * reach
-
-
-# -- the control bar ------------------------------------------------------------------------
-
-
-def _animation_ops(scene: Scene) -> list[tuple[str, float | None]]:
-    return [
-        (op.content["action"], op.content.get("value"))
-        for op in scene.channel.ops
-        if op.content["op"] == "animation"
-    ]
-
-
-def test_player_controls_send_play_pause_speed_and_seek(scene: Scene) -> None:
-    bar = scene.controls
-    assert bar.play.disabled and bar.time.disabled  # nothing to play yet
-    scene.animate(_motion(scene.robot), speed=2.0)
-    assert not bar.play.disabled and bar.time.max == pytest.approx(2.0)
-    assert bar.speed.value == 2.0
-    scene.channel.clear()
-    bar.pause.click()
-    bar.play.click()
-    bar.speed.value = 4.0
-    bar.time.value = 1.0
-    # Keyframes are in clip seconds (motion seconds / 2): speed 4 is twice the clip's.
-    assert _animation_ops(scene) == [("pause", None), ("play", None), ("speed", 2.0), ("seek", 0.5)]
-    scene.channel.clear()
-    bar.speed.value = 0.25
-    assert _animation_ops(scene) == [("speed", 0.125)]
-
-
-def test_reported_playback_time_moves_the_scrubber_without_seeking(scene: Scene) -> None:
-    bar = scene.controls
-    scene.animate(_motion(scene.robot), speed=2.0)
-    scene.channel.clear()
-    scene._view_event({"kind": "time", "value": 0.6, "playing": True})
-    assert bar.time.value == pytest.approx(1.2) and scene.animation.playing
-    assert scene.channel.ops == []  # following the page is not a seek
-
-
-def test_fit_labels_frames_and_trace_controls(scene: Scene) -> None:
-    bar = scene.controls
-    scene.channel.clear()
-    bar.fit.click()
-    assert scene.channel.kinds()[-1] == "fit"
-    scene.channel.clear()
-    bar.labels.value = "names"
-    labels = [op.content for op in scene.channel.ops if op.content["op"] == "labels"]
-    assert labels[-1]["texts"] == ["M1", "M2", "M3", "EE"]
-    bar.labels.value = "off"
-    assert scene.channel.ops[-1].content == {
-        "op": "visible",
-        "paths": [f"{ROBOT_PATH}/{p}" for p in scene._drawing.label_paths],
-        "value": False,
-    }
-    bar.labels.value = "positions"
-    assert scene.channel.ops[-1].content["texts"][-1] == "EE (70.0, 0.0, 20.0)"
-    scene.channel.clear()
-    bar.frames.value = True
-    assert scene.channel.ops[-1].content["value"] is True
-    assert all(p.endswith("/frame") for p in scene.channel.ops[-1].content["paths"])
-    # The trace: the EE's path of the loaded motion, as one line.
-    motion = _motion(scene.robot)
-    bar.trace.value = True
-    scene.channel.clear()
-    scene.animate(motion)
-    (trace,) = [c for c in scene.channel.commands("set_object") if c["path"].endswith("/trace")]
-    assert trace["object"]["object"]["type"] == "Line"
-    attribute = trace["object"]["geometries"][0]["data"]["attributes"]["position"]
-    line = np.frombuffer(attribute["array"].data, dtype=np.float32).reshape(-1, 3)
-    np.testing.assert_allclose(line, motion.position[:, -1], rtol=1e-6, atol=1e-4)
-    scene.channel.clear()
-    bar.trace.value = False
-    assert scene.channel.commands("delete") == [{"type": "delete", "path": f"{ROBOT_PATH}/trace"}]
-
-
-def test_view_puts_the_control_bar_above_the_pane(paper_robot: rc.Robot) -> None:
-    scene = rc.view(paper_robot, display=False)
-    assert list(scene.widget.children) == [scene.controls.widget, scene.pane]
-    bare = rc.view(paper_robot, display=False, controls=False)
-    assert bare.widget is bare.pane
-
-
-def test_the_pages_rounded_echo_of_the_time_does_not_seek(scene: Scene) -> None:
-    bar = scene.controls
-    scene.animate(_motion(scene.robot))
-    scene._view_event({"kind": "time", "value": 0.0085, "playing": True})
-    scene.channel.clear()
-    bar.time.value = round(0.0085 / bar.time.step) * bar.time.step  # the slider's rounding
-    assert scene.channel.ops == [] and scene.animation.playing
-    bar.time.value = 1.5  # a real scrub
-    assert _animation_ops(scene) == [("seek", 1.5)] and not scene.animation.playing
-
-
-def test_a_view_opening_during_playback_plays_and_one_after_it_does_not(scene: Scene) -> None:
-    scene.animate(_motion(scene.robot), play=True)
-    assert _replayed(scene).ops[-1].content == {"op": "animation", "action": "play"}
-    scene._view_event({"kind": "time", "value": 2.0, "playing": False})  # the page: ended
-    assert _replayed(scene).ops[-1].content["op"] == "labels"
-    scene.animate(_motion(scene.robot), play=False)
-    assert all(op.content["op"] != "animation" for op in _replayed(scene).ops)

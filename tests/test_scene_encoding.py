@@ -27,7 +27,7 @@ import robotconf as rc
 from robotconf.scene import ROOT, RecordingChannel, Scene, quaternions
 from robotconf.scene._commands import Op, command_op, set_object_op, shape_object
 from robotconf.scene._points import point_cloud_op
-from robotconf.scene._three import label_sprite
+from robotconf.scene._three import label_anchor
 
 # The reference implementation (imported by this test only).
 g = pytest.importorskip("meshcat.geometry")
@@ -62,7 +62,7 @@ def reference_shape(shape: str, size: float, color: int) -> dict[str, Any]:
     if shape == "triad":
         return g.triad(size).lower()
     assert shape == "label"
-    return label_sprite(size)  # robotconf's own object: meshcat has no label sprite
+    return label_anchor(size)  # robotconf's own object: the page writes the text beside it
 
 
 def reference_set_object(path: str, obj: dict[str, Any]) -> Op:
@@ -99,7 +99,7 @@ def assert_same_op(ours: Op, reference: Op) -> None:
 def test_every_drawn_object_matches_meshcat_geometry(robot_name: str) -> None:
     robot = rc.preset(robot_name)
     scene = Scene(robot, frames=True, channel=RecordingChannel())
-    drawing = scene._drawing
+    drawing = scene._robot.drawing
     assert drawing is not None
     shapes = {item.shape for item in drawing.items}
     assert {"sphere", "triad", "label"} <= shapes and shapes & {"cylinder", "box"}
@@ -140,7 +140,7 @@ def test_plain_commands_match_meshcat_commands(paper_robot: rc.Robot) -> None:
     scene = Scene(paper_robot, channel=RecordingChannel())
     scene.set_robot(paper_robot.with_module(1, rc.Module("Tz", a=(0, 0, 20))))
     channel = scene.channel
-    scale = 1.0 / scene._drawing.size  # type: ignore[union-attr]
+    scale = 1.0 / scene._robot.drawing.size  # type: ignore[union-attr]
     expected = {
         "set_property": meshcat_commands.SetProperty(
             "position", [0.9, 0.6, 0.9], MeshcatPath().append("/Cameras/default/rotated/<object>")
@@ -177,11 +177,12 @@ def test_animation_holds_meshcats_keyframes(paper_robot: rc.Robot) -> None:
     scene = Scene(paper_robot, channel=RecordingChannel())
     scene.animate(motion, speed=2.0, play=False)
     ours = scene.channel.commands("set_animation")[-1]
-    drawing = scene._drawing
+    drawing = scene._robot.drawing
     assert drawing is not None
 
-    # The reference: meshcat's Animation, one keyframe per sample, times in seconds (fps 1).
-    times = ((motion.t - motion.t[0]) / 2.0).tolist()
+    # The reference: meshcat's Animation, one keyframe per sample, times in motion seconds
+    # (fps 1; the page's player applies the speed).
+    times = (motion.t - motion.t[0]).tolist()
     placement = drawing.placements(motion.q)
     quats = quaternions(placement.rotation)
     animation = meshcat_animation.Animation(default_framerate=1)
@@ -215,5 +216,11 @@ def test_animation_holds_meshcats_keyframes(paper_robot: rc.Robot) -> None:
         for track, expected in zip(mine["clip"]["tracks"], flat["tracks"], strict=True):
             assert list(track) == list(expected)
             assert (track["name"], track["type"]) == (expected["name"], expected["type"])
-            assert track["times"] == expected["times"]
-            np.testing.assert_allclose(track["values"], expected["values"], atol=1e-6)
+            # Ours travel as float32 arrays (msgpack extensions the viewer decodes into the
+            # Float32Array three.js keeps its keyframes in anyway); meshcat's as lists.
+            times, values = (
+                np.frombuffer(track[key].data, dtype=np.float32) for key in ("times", "values")
+            )
+            assert track["times"].code == track["values"].code == g.threejs_type(np.float32)[1]
+            np.testing.assert_array_equal(times, np.float32(expected["times"]))
+            np.testing.assert_array_equal(values, np.float32(expected["values"]))

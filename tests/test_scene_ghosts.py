@@ -9,7 +9,8 @@ import pytest
 
 import robotconf as rc
 from robotconf.scene import RecordingChannel, Scene
-from robotconf.scene._ghosts import GHOST_OPACITY, GHOSTS, MAX_GHOSTS, TARGET, TARGET_COLORS
+from robotconf.scene._ghosts import GHOST_OPACITY, GHOSTS, MAX_GHOSTS
+from robotconf.scene._target import TARGET, TARGET_COLORS
 
 
 def _transforms(ops: list) -> dict[str, np.ndarray]:
@@ -47,7 +48,7 @@ def test_each_ghost_stands_where_the_core_puts_its_joints(scene: Scene, arm: rc.
     scene.channel.clear()
     scene.show_ghosts(arm, rows)
     created = [c for c in scene.channel.commands("set_object") if c["path"].startswith(GHOSTS)]
-    body = [i for i in scene._require_drawing().items if i.layer == "body" and i.shape != "triad"]
+    body = [i for i in scene._robot.drawing.items if i.layer == "body" and i.shape != "triad"]
     assert len(created) == 2 * len(body)
     for command in created:
         material = command["object"]["materials"][0]

@@ -9,7 +9,6 @@ import pytest
 import robotconf as rc
 from robotconf.scene import RecordingChannel, Scene
 from robotconf.scene._commands import Op
-from robotconf.scene._drawing import LABEL_HEIGHT
 from robotconf.scene._taught_points import TAUGHT, TAUGHT_COLORS, TAUGHT_RADIUS
 
 POINTS = np.array([[70.0, 0.0, 20.0], [30.0, 30.0, 60.0]])
@@ -34,7 +33,7 @@ def test_spheres_and_labels_stand_at_the_points() -> None:
     scene = paper_scene()
     scene.channel.clear()
     scene.show_taught_points(POINTS, via=[[50.0, 20.0, 40.0]])
-    size = scene._require_drawing().size
+    size = scene._robot.drawing.size
     spheres = {
         c["path"]: c["object"]
         for c in scene.channel.commands("set_object")
@@ -52,16 +51,16 @@ def test_spheres_and_labels_stand_at_the_points() -> None:
     every = np.vstack([POINTS, [[50.0, 20.0, 40.0]]])
     for k, point in enumerate(every):
         np.testing.assert_allclose(placed[f"{TAUGHT}/{k}/sphere"][:3, 3], point, rtol=1e-6)
-        # The label 1.5 radii above its sphere, never turned.
-        lifted = point + (0.0, 0.0, 1.5 * radius)
-        np.testing.assert_allclose(placed[f"{TAUGHT}/{k}/label"][:3, 3], lifted, rtol=1e-6)
+        # The label's anchor at the point itself, never turned (the page lifts the text).
+        np.testing.assert_allclose(placed[f"{TAUGHT}/{k}/label"][:3, 3], point, rtol=1e-6)
         np.testing.assert_array_equal(placed[f"{TAUGHT}/{k}/label"][:3, :3], np.eye(3))
     texts = [op.content for op in scene.channel.ops if op.content["op"] == "labels"][-1]
     assert texts["texts"] == ["P1", "P2", "via 1"]
     assert texts["paths"] == [f"{TAUGHT}/{k}/label" for k in range(3)]
-    # The sprites are as tall as the robot's own labels (the text fills 70 % of the band).
+    # Anchors only: the page writes the texts as the robot's own labels.
     for label in labels:
-        assert label["object"]["object"]["matrix"][5] == pytest.approx(LABEL_HEIGHT * size / 0.7)
+        assert label["object"]["object"]["type"] == "Object3D"
+        assert label["object"]["geometries"] == label["object"]["materials"] == []
 
 
 def test_coinciding_points_share_one_label() -> None:

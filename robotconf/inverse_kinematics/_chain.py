@@ -29,7 +29,7 @@ import numpy as np
 
 from ..kinematics import Robot, cos_sin
 
-__all__ = ["Chain", "compile_chain"]
+__all__ = ["Chain", "Workspace", "compile_chain"]
 
 
 def _permutation(axis: int) -> np.ndarray:
@@ -61,6 +61,28 @@ def _slide(axis: int, distance: float) -> np.ndarray:
 
 #: One column of a constant product, as (source column, factor) pairs (zeros left out).
 Terms = tuple[tuple[int, float], ...]
+
+
+class Workspace:
+    """Arrays kept from one step of the solver to the next, by name.
+
+    Arrays above glibc's mmap threshold (128 kB: a Jacobian of 1000 runs is 288 kB) are
+    fresh pages each time numpy allocates them, and every page is faulted in at first
+    touch — a large part of a step's time at large batches. The solver's loop writes its
+    biggest temporaries into these instead: :meth:`get` returns an array of the shape
+    asked, carved from one kept buffer per name (reallocated only when it must grow), valid
+    until the next :meth:`get` of that name.
+    """
+
+    def __init__(self) -> None:
+        self._buffers: dict[str, np.ndarray] = {}
+
+    def get(self, name: str, shape: tuple[int, ...]) -> np.ndarray:
+        size = int(np.prod(shape))
+        buffer = self._buffers.get(name)
+        if buffer is None or buffer.size < size:
+            buffer = self._buffers[name] = np.empty(size)
+        return buffer[:size].reshape(shape)
 
 
 @dataclass(frozen=True, eq=False)
@@ -119,7 +141,7 @@ class Chain:
         """The number ``m`` of moving joints."""
         return len(self.joints)
 
-    def run(self, x: np.ndarray) -> Pass:
+    def run(self, x: np.ndarray, workspace: Workspace | None = None) -> Pass:
         """The end-effector pose and every joint's axis at moving coordinates ``x`` (B, m).
 
         The state is the pose's four columns, each (3, B) with the batch innermost, so
@@ -146,7 +168,11 @@ class Chain:
         start = np.empty((4, 3, count))
         start[...] = first[:3].T[:, :, np.newaxis]
         columns = list(start)
-        axes, pivots = np.empty((m, 3, count)), np.empty((m, 3, count))
+        if workspace is None:
+            axes, pivots = np.empty((m, 3, count)), np.empty((m, 3, count))
+        else:
+            axes = workspace.get("axes", (m, 3, count))
+            pivots = workspace.get("pivots", (m, 3, count))
         for j in range(m):
             x_axis, y_axis, z_axis, point = columns
             axes[j] = z_axis
@@ -166,7 +192,11 @@ class Chain:
 
 
 def _terms(column: np.ndarray) -> Terms:
-    return tuple((i, float(column[i])) for i in range(len(column)) if column[i] != 0.0)
+    """The nonzero entries of a constant's column. Entries at float64 rounding of the
+    column's largest (the 6e-17 that cos(90°) leaves in a DH twist) count as zero: they
+    move no result beyond rounding, and each would cost an operation per step."""
+    floor = 4.0 * np.finfo(float).eps * float(np.max(np.abs(column), initial=0.0))
+    return tuple((i, float(column[i])) for i in range(len(column)) if abs(column[i]) > floor)
 
 
 def _combine(columns: list[np.ndarray], terms: Terms) -> np.ndarray:

@@ -18,11 +18,12 @@ wrapped, when the range spans a full turn). A joint already at a limit whose ste
 push it further is frozen for that step and the step is solved again without it, so the
 other joints still make progress along the limit.
 
-A run stops when it meets both tolerances (**converged**), when its error is orthogonal
-to everything the joints can do (**stationary**: ``‖Jᵀe‖ ≤ 10⁻⁹ ‖J‖ ‖e‖``, a closest
-point or a singularity), when ``μ`` passes ``10⁸`` without an accepted step or ``E`` falls
-by less than 1 % over 10 steps (**stalled**: nothing lowers the error any more, e.g.
-crawling along a limit, or at rounding level), or after ``max_iterations`` steps.
+A run stops when it meets both tolerances (**converged**), when ``μ`` passes ``10⁸``
+without an accepted step or ``E`` has not halved over 5 steps (**stalled**: crawling
+along a limit, at a saddle where no step helps, at rounding level, or on its way to a
+solution outside the ranges — another start is cheaper than following it), or after
+``max_iterations`` steps. (:data:`STATIONARY` is the second-order descent's word for a
+local minimum, :mod:`robotconf.inverse_kinematics._closest`.)
 Runs of one target may be ordered (its starts, tried in turn): a run is dropped
 (**superseded**) as soon as a run of the same target ordered before it has converged,
 since only the first converged run counts.
@@ -40,6 +41,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ._chain import Workspace
 from ._problem import FULL_TURN, Problem
 
 __all__ = [
@@ -62,11 +64,9 @@ BIAS = 1e-4
 #: Limits and factors of the trust multiplier μ.
 MU_START, MU_MIN, MU_MAX = 1.0, 1e-6, 1e8
 MU_DOWN, MU_UP = 0.25, 4.0
-#: A run whose ``E`` fell by less than 1 % over this many steps is crawling (typically
-#: along a joint limit) and stops as stalled.
-PROGRESS_WINDOW, PROGRESS_FACTOR = 10, 0.99
-#: ``‖Jᵀe‖ / (‖J‖ ‖e‖)`` below this: the error is orthogonal to every joint motion.
-STATIONARY_RATIO = 1e-9
+#: A run whose ``E`` has not fallen below this factor of itself over this many steps is
+#: crawling and stops as stalled: converging runs halve it many times over in that time.
+PROGRESS_WINDOW, PROGRESS_FACTOR = 5, 0.5
 
 
 @dataclass
@@ -112,6 +112,14 @@ class _Joints:
     clipped: np.ndarray
     scale: np.ndarray
 
+    def __post_init__(self) -> None:
+        margin = 1e-12 * np.maximum(self.upper - self.lower, 1.0)
+        # A joint within the margin of a clipped limit sits at it (see blocked_joints).
+        self.low_edge = np.where(self.clipped, self.lower + margin, -np.inf)
+        self.high_edge = np.where(self.clipped, self.upper - margin, np.inf)
+        self.any_wraps = bool(self.wraps.any())
+        self.any_clipped = bool(self.clipped.any())
+
     @classmethod
     def of(cls, problem: Problem) -> _Joints:
         j = problem.joints
@@ -120,27 +128,26 @@ class _Joints:
 
     def project(self, x: np.ndarray, limits: np.ndarray) -> np.ndarray:
         """``x`` (B, m) wrapped or clipped into the ranges where ``limits`` (B,) says so."""
-        outside = self.wraps & ((x < self.lower) | (x > self.upper))
-        wrapped = self.lower + np.mod(x - self.lower, FULL_TURN)
-        inside = np.clip(np.where(outside, wrapped, x), self.lower, self.upper)
+        inside = x
+        if self.any_wraps:
+            outside = self.wraps & ((x < self.lower) | (x > self.upper))
+            wrapped = self.lower + np.mod(x - self.lower, FULL_TURN)
+            inside = np.where(outside, wrapped, x)
+        inside = np.clip(inside, self.lower, self.upper)
+        if limits.all():
+            return inside
         return np.where(limits[:, np.newaxis], inside, x)
 
     def blocked(self, x: np.ndarray, direction: np.ndarray, limits: np.ndarray) -> np.ndarray:
-        blocked = blocked_joints(self.lower, self.upper, self.clipped, x, direction)
-        return blocked & limits[:, np.newaxis]
+        """Joints (B, m) at a clipped limit that ``direction`` pushes past, where ``limits``."""
+        low = (x <= self.low_edge) & (direction < 0)
+        blocked = low | ((x >= self.high_edge) & (direction > 0))
+        return blocked if limits.all() else blocked & limits[:, np.newaxis]
 
 
 def _dot(a: np.ndarray, b: np.ndarray) -> np.ndarray:
     """Row-wise dot products of (B, k) arrays, (B,)."""
     return (a[:, np.newaxis, :] @ b[:, :, np.newaxis])[:, 0, 0]
-
-
-def _with_damping(normal: np.ndarray, damping: np.ndarray) -> np.ndarray:
-    """``JᵀJ + λI`` for (B, m, m) and (B,)."""
-    system = normal.copy()
-    m = normal.shape[-1]
-    system.reshape(len(normal), m * m)[:, :: m + 1] += damping[:, np.newaxis]
-    return system
 
 
 def _step(
@@ -152,18 +159,20 @@ def _step(
     limits: np.ndarray | None,
 ) -> np.ndarray:
     """Solve ``(JᵀJ + λI) Δ = Jᵀe``, again without the joints it would push past a limit
-    (``limits`` (B,): where the ranges hold; None: nowhere)."""
-    system = _with_damping(normal, damping)
-    step = np.linalg.solve(system, gradient[:, :, np.newaxis])[:, :, 0]
+    (``limits`` (B,): where the ranges hold; None: nowhere). ``normal`` is overwritten."""
+    m = normal.shape[-1]
+    diagonal = normal.reshape(len(normal), m * m)[:, :: m + 1]
+    diagonal += damping[:, np.newaxis]
+    step = np.linalg.solve(normal, gradient[:, :, np.newaxis])[:, :, 0]
     if limits is not None:
         blocked = joints.blocked(x, step, limits)
         again = np.flatnonzero(blocked.any(axis=1))
         if again.size:
             # Freezing joints zeroes their Jacobian columns: JᵀJ loses their rows and
-            # columns, Jᵀe their entries.
+            # columns, Jᵀe their entries (the damping keeps the system regular).
             free = ~blocked[again]
-            frozen = normal[again] * (free[:, :, np.newaxis] & free[:, np.newaxis, :])
-            system = _with_damping(frozen, damping[again])
+            system = normal[again] * (free[:, :, np.newaxis] & free[:, np.newaxis, :])
+            system.reshape(len(again), m * m)[:, :: m + 1] += damping[again, np.newaxis] * ~free
             free_gradient = (gradient[again] * free)[:, :, np.newaxis]
             step[again] = np.linalg.solve(system, free_gradient)[:, :, 0]
     return step * joints.scale
@@ -225,61 +234,54 @@ def solve(
     mu = np.full(ids.size, MU_START)
     checkpoint = np.full(ids.size, np.inf)
     energy = problem.energy(state.error)
-    clipped = bool(joints.clipped.any())
-    m = joints.scale.size
+    m = len(problem.joints)
+    workspace = Workspace()
     for iteration in range(max_iterations):
         if not ids.size:
             break
-        stop = np.zeros(ids.size, dtype=int) if race is None else race.lost(ids)
+        stop = None if race is None else race.lost(ids)
         if iteration % PROGRESS_WINDOW == 0:
-            stop[(stop == 0) & (energy > PROGRESS_FACTOR * checkpoint)] = STALLED
+            # Crawling: E fell by less than the factor since the last check.
+            stalled = np.where(energy > PROGRESS_FACTOR * checkpoint, STALLED, 0)
+            stop = stalled if stop is None else np.where(stop == 0, stalled, stop)
             checkpoint = energy
-        scaled = state.error * problem.row_scale
-        jt = state.jacobian.transpose(0, 2, 1)
-        gradient = (jt @ scaled[:, :, np.newaxis])[:, :, 0]
-        normal = jt @ state.jacobian
-        # Stationary: no allowed motion changes the error (joints pressed against a
-        # limit cannot help, so they are left out of the test). ‖J‖² sums JᵀJ's diagonal.
-        columns = normal.reshape(len(normal), m * m)[:, :: m + 1]
-        bounded = state.limits if clipped and state.limits.any() else None
-        if bounded is None:
-            size, free_gradient = _dot(columns, np.ones_like(gradient)), gradient
-        else:
-            allowed = ~joints.blocked(state.x, gradient, bounded)
-            size, free_gradient = _dot(columns, allowed.astype(float)), gradient * allowed
-        flat = _dot(free_gradient, free_gradient) <= STATIONARY_RATIO**2 * size * 2.0 * energy
-        stop[(stop == 0) & flat] = STATIONARY
-        going = stop == 0
-        if not going.all():
+        if stop is not None and stop.any():
+            going = stop == 0
             finished = ~going
             status[ids[finished]] = stop[finished]
             out_x[ids[finished]] = state.x[finished]
             out_error[ids[finished]] = state.error[finished]
             ids, mu, checkpoint, energy = ids[going], mu[going], checkpoint[going], energy[going]
             state = state.take(going)
-            gradient, normal = gradient[going], normal[going]
-            if bounded is not None:
-                bounded = state.limits
             if not ids.size:
                 break
+        scaled = state.error * problem.row_scale
+        jt = state.jacobian.transpose(0, 2, 1)
+        gradient = (jt @ scaled[:, :, np.newaxis])[:, :, 0]
+        # Into a buffer kept across steps: arrays this size (above glibc's mmap threshold)
+        # would otherwise be fresh pages, page-faulted in at every step.
+        normal = np.matmul(jt, state.jacobian, out=workspace.get("normal", (len(ids), m, m)))
+        bounded = state.limits if joints.any_clipped and state.limits.any() else None
         step = _step(normal, gradient, mu * (energy + BIAS), joints, state.x, bounded)
         trial = joints.project(state.x + step, state.limits)
-        trial_error, trial_jacobian = problem.evaluate(state.positions, state.rotations, trial)
+        trial_error, trial_jacobian = problem.evaluate(
+            state.positions, state.rotations, trial, workspace=workspace
+        )
         assert trial_jacobian is not None
         trial_energy = problem.energy(trial_error)
         better = trial_energy < energy
         iterations[ids] += 1
-        state.x = np.where(better[:, np.newaxis], trial, state.x)
-        state.error = np.where(better[:, np.newaxis], trial_error, state.error)
-        state.jacobian = np.where(better[:, np.newaxis, np.newaxis], trial_jacobian, state.jacobian)
+        np.copyto(state.x, trial, where=better[:, np.newaxis])
+        np.copyto(state.error, trial_error, where=better[:, np.newaxis])
+        np.copyto(state.jacobian, trial_jacobian, where=better[:, np.newaxis, np.newaxis])
         energy = np.where(better, trial_energy, energy)
         mu = np.where(better, np.maximum(mu * MU_DOWN, MU_MIN), mu * MU_UP)
         done = np.where(better & problem.converged(state.error), CONVERGED, 0)
         done[~better & (mu > MU_MAX)] = STALLED
         if race is not None:
             race.won(ids[done == CONVERGED])
-        going = done == 0
-        if not going.all():
+        if done.any():
+            going = done == 0
             finished = ~going
             status[ids[finished]] = done[finished]
             out_x[ids[finished]] = state.x[finished]

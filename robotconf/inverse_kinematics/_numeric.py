@@ -31,7 +31,8 @@ from .._budget import check_memory
 from .._errors import InvalidInputError
 from .._validation import one_line
 from ..kinematics import Robot
-from ._lm import CONVERGED, STALLED, blocked_joints, gradient_ratio
+from ._closest import descend
+from ._lm import CONVERGED, STALLED, solve
 from ._problem import Problem, make_problem, robot_model
 from ._reach import Reach
 from ._reasons import (
@@ -54,16 +55,19 @@ __all__ = ["ik", "ik_bytes"]
 #: Errors below this (relative to the robot's size, or in rad) are float64 rounding.
 ROUNDING = 1e3 * np.finfo(float).eps
 
-#: ``‖Jᵀe‖ / (‖J‖ ‖e‖)`` at most this at the closest configuration: no motion helps.
-LOCAL_MINIMUM_RATIO = 1e-6
+#: A target proved out of reach whose descent from q0 stops short of the proved distance
+#: tries the other starts this many at a time, each a least-squares run of at most
+#: EXTRA_ITERATIONS steps (it only has to find a basin: the descent then goes down it).
+EXTRA_STARTS, EXTRA_ITERATIONS = 4, 20
 
 
 def ik_bytes(targets: int, n: int) -> float:
     """Peak bytes of :func:`ik` for ``targets`` targets of an ``n``-joint robot.
 
-    An upper estimate: a wave of runs (at most ``max(T, 128)``, each with its pose,
-    Jacobian, the step's n×n systems and their copies for LAPACK), plus the targets and
-    the search state. Measured peaks with ``tracemalloc``: 4.4 kB per target for 20 000
+    An upper estimate: the runs going at once (at most ``max(T, 128)``, each with its
+    pose, Jacobian, the step's n×n systems and their copies for LAPACK), plus the targets
+    and the search state; the closest-point descent works in chunks of at most 512
+    targets. Measured peaks with ``tracemalloc``: 4.4 kB per target for 20 000
     PUMA 560 pose targets (n = 6) and 1.7 kB for 20 000 points of the paper robot
     (n = 3), 1.4 and 2 times below the estimate.
 
@@ -193,15 +197,17 @@ def ik(
     )
     found = search(problem, first, draws, proved, options.max_iterations, limits)
     _verify(problem, found)
+    minimum = _approach(problem, found, proved, beyond, draws, options.max_iterations, limits)
+    _verify(problem, found)
     return _diagnose(
         problem,
         targets.batched,
         reach,
         beyond,
         proved,
+        minimum,
         typical,
         options.max_iterations,
-        limits,
         found,
     )
 
@@ -216,15 +222,83 @@ def _verify(problem: Problem, found: Search) -> None:
     found.status[(found.status == CONVERGED) & ~problem.converged(error)] = STALLED
 
 
+def _closer(problem: Problem, error: np.ndarray, than: np.ndarray) -> np.ndarray:
+    """Whether errors (B, r) are closer than errors ``than`` (B, r) by more than the
+    position tolerance (in the solver's units): a later start must be clearly better to
+    replace an earlier one, so ties keep the configuration nearest ``q0``."""
+    margin = problem.position_tol / problem.length
+    return np.sqrt(2.0 * problem.energy(error)) < np.sqrt(2.0 * problem.energy(than)) - margin
+
+
+def _approach(
+    problem: Problem,
+    found: Search,
+    proved: np.ndarray,
+    beyond: np.ndarray,
+    draws: np.ndarray,
+    max_iterations: int,
+    limits: bool,
+) -> np.ndarray:
+    """Take every target not met to the closest configuration (:mod:`._closest`).
+
+    Its best run (a target proved out of reach: its first start) continues by a
+    second-order descent. A proved target whose descent from ``q0`` stops short of the
+    proved distance (against a joint limit, say) then tries the other starts, a few at
+    a time (:data:`EXTRA_STARTS`, each a short least-squares run, the closest of them
+    descending in turn) until one reaches the proved distance, and keeps the closest
+    clearly closer than the one from ``q0``. Returns which targets end at a local
+    minimum of the distance.
+    """
+    count = len(found.q)
+    minimum = np.zeros(count, dtype=bool)
+    found.starts[proved] = 1
+    failed = np.flatnonzero(found.status != CONVERGED)
+    if not failed.size:
+        return minimum
+    end = descend(problem, failed, found.q[failed], limits, max_iterations)
+    found.q[failed], found.error[failed] = end.q, end.error
+    found.status[failed] = np.where(end.status == CONVERGED, CONVERGED, found.status[failed])
+    found.iterations[failed] += end.iterations
+    minimum[failed] = end.minimum
+    short = failed[proved[failed] & _short(problem, found.error[failed], beyond[failed])]
+    # At most max(T, 128) runs at once, as in the search.
+    per_wave = max(1, min(EXTRA_STARTS, max(count, WAVE_RUNS) // max(len(short), 1)))
+    for first in range(0, len(draws), per_wave):
+        if not short.size:
+            break
+        chunk = draws[first : first + per_wave]
+        index = np.repeat(short, len(chunk))
+        steps = min(max_iterations, EXTRA_ITERATIONS)
+        run = solve(problem, index, np.tile(chunk, (len(short), 1)), steps, limits)
+        energy = problem.energy(run.error).reshape(len(short), len(chunk))
+        best = np.arange(len(short)) * len(chunk) + np.argmin(energy, axis=1)
+        other = descend(problem, short, run.q[best], limits, max_iterations)
+        spent = run.iterations.reshape(len(short), len(chunk)).sum(axis=1)
+        found.iterations[short] += spent + other.iterations
+        found.starts[short] += len(chunk)
+        closer = _closer(problem, other.error, found.error[short])
+        chosen = short[closer]
+        found.q[chosen], found.error[chosen] = other.q[closer], other.error[closer]
+        minimum[chosen] = other.minimum[closer]
+        short = short[_short(problem, found.error[short], beyond[short])]
+    return minimum
+
+
+def _short(problem: Problem, error: np.ndarray, beyond: np.ndarray) -> np.ndarray:
+    """Whether errors (B, r) miss by more than the proved distance ``beyond`` (B,)."""
+    position, _ = problem.error_norms(error)
+    return position > beyond + problem.position_tol
+
+
 def _diagnose(
     problem: Problem,
     batched: bool,
     reach: Reach,
     beyond: np.ndarray,
     proved: np.ndarray,
+    minimum: np.ndarray,
     typical: int,
     max_iterations: int,
-    limits: bool,
     search: Search,
 ) -> IKResult:
     q, error, status, starts = search.q, search.error, search.status, search.starts
@@ -233,10 +307,14 @@ def _diagnose(
     message = [""] * count
     distance = np.zeros(count)
     failed = np.flatnonzero(status != CONVERGED)
+    missed, _ = _norms(problem, error)
     for i in failed[proved[failed]]:
         reason[i] = "unreachable"
         distance[i] = beyond[i]
-        message[i] = beyond_reach_message(reach, problem.positions[i], float(beyond[i]))
+        # Say how far the closest configuration stays when the bound is not reached.
+        farther = missed[i] > beyond[i] + problem.position_tol
+        closest = float(missed[i]) if farther else None
+        message[i] = beyond_reach_message(reach, problem.positions[i], float(beyond[i]), closest)
     open_ = failed[~proved[failed]]
     past = search.outside[open_].any(axis=1)
     for i in open_[past]:
@@ -246,27 +324,19 @@ def _diagnose(
 
     if open_.size:
         jacobian = problem.expand(problem.jacobian_at(open_, q[open_]))
-        scaled = problem.scaled(error[open_])
-        allowed = jacobian
-        if limits:
-            gradient = (jacobian.transpose(0, 2, 1) @ scaled[:, :, np.newaxis])[:, :, 0]
-            clipped = problem.moving & ~problem.wraps
-            blocked = blocked_joints(problem.lower, problem.upper, clipped, q[open_], gradient)
-            allowed = jacobian * ~blocked[:, np.newaxis]
-        flat = gradient_ratio(allowed, scaled) <= LOCAL_MINIMUM_RATIO
         found = rank(jacobian[:, :, problem.moving], SINGULAR_TOL)
         full = problem.robot.jacobian(q[open_])
         position, orientation = _norms(problem, error[open_])
         rounding = ~(position > ROUNDING * problem.length) & ~(orientation > ROUNDING)
         for k, i in enumerate(open_):
             lost = dependent_joints(problem, jacobian[k], full[k]) if found[k] < typical else None
-            if lost is not None:
-                reason[i] = "singular"
-                message[i] = singular_message(*lost)
-            elif flat[k]:
+            if minimum[i]:
                 reason[i] = "unreachable"
                 distance[i] = np.nan_to_num(position[k])
                 message[i] = closest_message(int(starts[i]), position[k], orientation[k])
+            elif lost is not None:
+                reason[i] = "singular"
+                message[i] = singular_message(*lost)
             else:
                 reason[i] = "iteration limit"
                 message[i] = iteration_message(

@@ -26,7 +26,7 @@ from functools import lru_cache
 import numpy as np
 
 from ..kinematics import Robot, characteristic_length
-from ._chain import Chain, Pass, compile_chain
+from ._chain import Chain, Pass, Workspace, compile_chain
 from ._reach import Reach, reach_shell
 from ._rotation import rotation_vector_last
 from ._targets import Targets
@@ -145,6 +145,7 @@ class Problem:
         rotations: np.ndarray | None,
         x: np.ndarray,
         jacobian: bool = True,
+        workspace: Workspace | None = None,
     ) -> tuple[np.ndarray, np.ndarray | None]:
         """Error and Jacobian at moving coordinates ``x`` (B, m), from one pass of the chain.
 
@@ -158,6 +159,9 @@ class Problem:
         x : ndarray, shape (B, m)
         jacobian : bool
             Whether to compute the Jacobian too.
+        workspace : Workspace, optional
+            Where the pass keeps its large arrays: the Jacobian returned then lives in it
+            and is valid until the next call with the same workspace.
 
         Returns
         -------
@@ -167,11 +171,11 @@ class Problem:
         jacobian : ndarray, shape (B, r, m), or None
             Their derivatives by the moving coordinates, in the solver's units.
         """
-        chain = self.chain.run(x)
+        chain = self.chain.run(x, workspace)
         error = self._errors(positions, rotations, chain.columns)
         if not jacobian:
             return error, None
-        return error, self._jacobian(chain, rotations)
+        return error, self._jacobian(chain, rotations, workspace)
 
     def rotations_of(self, index: np.ndarray) -> np.ndarray | None:
         """The rotations of targets ``index`` batch last, (3, 3, B), as :meth:`evaluate`
@@ -202,11 +206,14 @@ class Problem:
         """Whether some turn row counts (then the targets have rotations)."""
         return self.rotations is not None and bool(self.rows[-1] >= 3)
 
-    def _jacobian(self, chain: Pass, rotations: np.ndarray | None) -> np.ndarray:
+    def _jacobian(
+        self, chain: Pass, rotations: np.ndarray | None, workspace: Workspace | None = None
+    ) -> np.ndarray:
         turns = self._turns
         axes = chain.axes
         lever = chain.columns[3] - chain.pivots
-        full = np.empty((6 if turns else 3, *axes.shape[::2]))  # (rows, m, B)
+        shape = (6 if turns else 3, *axes.shape[::2])  # (rows, m, B)
+        full = np.empty(shape) if workspace is None else workspace.get("full", shape)
         # z × lever, one component at a time (a turn's linear velocity per unit q̇).
         for i in range(3):
             j, k = (i + 1) % 3, (i + 2) % 3
@@ -222,7 +229,8 @@ class Problem:
             assert rotations is not None
             full[3:] = _turned_back(rotations[:, :, np.newaxis], full[3:])
         rows = full[: len(self.rows)] if self.leading else full[self.rows]
-        out = np.empty((rows.shape[-1], *rows.shape[:2]))
+        shape = (rows.shape[-1], *rows.shape[:2])
+        out = np.empty(shape) if workspace is None else workspace.get("jacobian", shape)
         np.multiply(rows.transpose(2, 0, 1), self.scale, out=out)
         return out
 
@@ -269,8 +277,11 @@ class Problem:
 
     def converged(self, error: np.ndarray) -> np.ndarray:
         """Whether each of (B, r) errors meets both tolerances, (B,) bool."""
-        position, orientation = self.error_norms(error)
-        return (position <= self.position_tol) & (orientation <= self.orientation_tol)
+        squares = error * error
+        position = np.sum(squares[:, : self.split], axis=-1)
+        orientation = np.sum(squares[:, self.split :], axis=-1)
+        # Compared squared: the square roots of error_norms cost time in the solver's loop.
+        return (position <= self.position_tol**2) & (orientation <= self.orientation_tol**2)
 
     # -- joint ranges -------------------------------------------------------------------------
 

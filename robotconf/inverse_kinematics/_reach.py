@@ -19,6 +19,17 @@ origin and the first segment starts there.
 
 Joint ranges of revolute joints are ignored (they only shrink the true reachable set), so
 both bounds are safe: a target farther than R from c, or closer than r, is out of reach.
+
+**Arms whose revolute axes are all parallel** (planar arms, SCARAs, a cylindrical robot)
+are held tighter. A turn about the common direction ``w`` keeps every point's height
+``w·p``, so only the prismatic strokes move it: the end effector stays in a **slab**
+``h_lo ≤ w·p ≤ h_hi`` (a plane for a planar arm), whatever the turns. And seen along
+``w``, each segment turns in the plane across it, so the triangle and polygon inequalities
+hold for the segments' parts across ``w``: the distance ``ρ`` from joint 1's axis lies in
+``[r⊥, R⊥]`` (an annulus). The reachable set lies in the product of the two, and the
+distance to it, ``√(d_h² + d_ρ²)``, is a lower bound of the distance to reach — exact for
+a planar arm without joint ranges (the set is then the annulus itself). The larger of
+this and the sphere's bound is used.
 """
 
 from __future__ import annotations
@@ -30,31 +41,77 @@ import numpy as np
 
 from ..kinematics import Robot
 
-__all__ = ["Reach", "reach_shell"]
+__all__ = ["Reach", "Cylinder", "reach_shell"]
 
 # Up to 2**12 corners of a segment's stroke box are tried exactly; beyond, a sum bound.
 _MAX_CORNER_JOINTS = 12
+# Revolute axes count as parallel when |w × w_j| is at most this (float64 rounding).
+_PARALLEL = 1e-12
+
+
+@dataclass(frozen=True)
+class Cylinder:
+    """Where an arm with parallel revolute axes keeps its end effector: heights
+    ``low ≤ w·p ≤ high`` along the unit ``direction`` w and, when ``radii`` is given, a
+    distance from the line through ``point`` along w between ``radii[0]`` and
+    ``radii[1]`` (length units)."""
+
+    direction: np.ndarray
+    low: float
+    high: float
+    point: np.ndarray
+    radii: tuple[float, float] | None
+
+    def parts(self, points: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
+        """How far each point (T, 3) lies outside the slab, and outside the annulus."""
+        height = points @ self.direction
+        off = np.maximum(0.0, np.maximum(height - self.high, self.low - height))
+        if self.radii is None:
+            return off, np.zeros(len(points))
+        across = (
+            points - self.point - np.outer((points - self.point) @ self.direction, self.direction)
+        )
+        rho = np.linalg.norm(across, axis=-1)
+        inner, outer = self.radii
+        return off, np.maximum(0.0, np.maximum(rho - outer, inner - rho))
 
 
 @dataclass(frozen=True)
 class Reach:
     """The reach shell: centre ``center`` (3,), outer radius ``outer``, hole radius ``inner``
-    (length units), and the joint (0-based) whose axis holds the centre (None: the base
-    origin)."""
+    (length units), the joint (0-based) whose axis holds the centre (None: the base
+    origin), and, for arms whose revolute axes are all parallel, the :class:`Cylinder`
+    that holds them tighter (None otherwise)."""
 
     center: np.ndarray
     outer: float
     inner: float
     axis_joint: int | None
+    cylinder: Cylinder | None = None
 
-    def distance(self, points: np.ndarray) -> np.ndarray:
-        """How far each point (T, 3) lies outside the shell: beyond R or inside the hole.
+    def sphere_distance(self, points: np.ndarray) -> np.ndarray:
+        """How far each point (T, 3) lies outside the sphere shell: beyond R or in the hole.
 
-        >>> Reach(np.zeros(3), 3.0, 1.0, 0).distance(np.array([[0.5, 0, 0], [5, 0, 0]]))
+        >>> Reach(np.zeros(3), 3.0, 1.0, 0).sphere_distance(np.array([[0.5, 0, 0], [5, 0, 0]]))
         array([0.5, 2. ])
         """
         radius = np.linalg.norm(points - self.center, axis=-1)
         return np.maximum(0.0, np.maximum(radius - self.outer, self.inner - radius))
+
+    def distance(self, points: np.ndarray) -> np.ndarray:
+        """A lower bound (T,) of how far each point (T, 3) lies from anything the robot
+        reaches: the larger of the sphere's and the cylinder's bounds.
+
+        >>> from robotconf.presets import preset
+        >>> shell = reach_shell(preset("planar_2r", l1=2, l2=1), np.ones(2, bool), np.zeros(2))
+        >>> shell.distance(np.array([[0.5, 0.0, 2.0]])).round(6)  # √(0.5² + 2²)
+        array([2.061553])
+        """
+        out = self.sphere_distance(points)
+        if self.cylinder is not None:
+            off, across = self.cylinder.parts(points)
+            out = np.maximum(out, np.hypot(off, across))
+        return out
 
 
 @dataclass
@@ -121,6 +178,7 @@ def reach_shell(robot: Robot, moving: np.ndarray, held_q: np.ndarray) -> Reach:
     constants = robot.transfer_matrices(held_q)
     limits = robot.joint_limits()
     segments: list[_Segment] = []
+    axes: list[int] = []  # per segment, the local axis of the joint that turns it
     rotation, position = np.eye(3), np.zeros(3)
     strokes: list[tuple[np.ndarray, float, float]] = []
     pivot: tuple[int, np.ndarray, np.ndarray, int] | None = None  # joint, point, axis, k
@@ -145,6 +203,7 @@ def reach_shell(robot: Robot, moving: np.ndarray, held_q: np.ndarray) -> Reach:
                 pivot = (j, position.copy(), rotation[:, k].copy(), k)
             else:
                 segments.append(_Segment(position.copy(), strokes))
+            axes.append(k)
             # The next segment is written in the frame Rot_k(θ₀ + q) turned to; any
             # q leaves its axis k where it was.
             rotation, position, strokes = np.eye(3), np.zeros(3), []
@@ -167,11 +226,65 @@ def reach_shell(robot: Robot, moving: np.ndarray, held_q: np.ndarray) -> Reach:
         unit[k] = 1.0
         segments[0] = _Segment(first.constant - slide * unit, first.strokes)
         center = point + slide * axis
+    outer, inner = _radii(segments)
+    cylinder = _cylinder(robot, moving, held_q, segments, axes, pivot)
+    return Reach(center + 0.0, outer, inner, axis_joint, cylinder)
+
+
+def _radii(segments: list[_Segment]) -> tuple[float, float]:
+    """``(R, r)``: the sum of the longest lengths, and the polygon inequality's hole."""
     longest = [segment.longest() for segment in segments]
     shortest = [segment.shortest() for segment in segments]
     outer = float(sum(longest))
     inner = max([0.0] + [s - (outer - m) for s, m in zip(shortest, longest, strict=True)])
-    return Reach(center + 0.0, outer, float(inner), axis_joint)
+    return outer, float(inner)
+
+
+def _cylinder(
+    robot: Robot,
+    moving: np.ndarray,
+    held_q: np.ndarray,
+    segments: list[_Segment],
+    axes: list[int],
+    pivot: tuple[int, np.ndarray, np.ndarray, int] | None,
+) -> Cylinder | None:
+    """The slab and annulus of an arm whose moving revolute axes are all parallel."""
+    types = robot.joint_types
+    turns = [j for j in range(robot.n) if moving[j] and types[j] == "revolute"]
+    slides = [j for j in range(robot.n) if moving[j] and types[j] == "prismatic"]
+    if not turns:
+        return None
+    q = np.where(moving, 0.0, held_q)
+    jacobian = robot.jacobian(q)
+    direction = jacobian[3:, turns[0]]
+    direction = direction / np.linalg.norm(direction)
+    spread = np.linalg.norm(np.cross(direction, jacobian[3:, turns].T), axis=-1)
+    if np.any(spread > _PARALLEL):
+        return None
+    # Every turn keeps the height w·p; a slide s along u adds s·(w·u) whatever the turns.
+    height = float(direction @ robot.end_effector(q))
+    limits = robot.joint_limits()
+    low = high = height
+    for j in slides:
+        rate = float(direction @ jacobian[:3, j])
+        ends = rate * (limits[j] - q[j])
+        low, high = low + float(np.min(ends)), high + float(np.max(ends))
+    radii = None
+    if pivot is not None and len(axes) == len(segments):
+        # Each segment is written in the frame of the joint that turns it, whose own axis
+        # k is w: its part across w drops coordinate k.
+        flat = [_across(segment, k) for segment, k in zip(segments, axes, strict=True)]
+        outer, inner = _radii(flat)
+        radii = (inner, outer)
+    point = pivot[1] if pivot is not None else np.zeros(3)
+    return Cylinder(direction, low, high, point.copy(), radii)
+
+
+def _across(segment: _Segment, k: int) -> _Segment:
+    keep = np.ones(3)
+    keep[k] = 0.0
+    strokes = [(u * keep, lo, hi) for u, lo, hi in segment.strokes]
+    return _Segment(segment.constant * keep, strokes)
 
 
 def _axis_rotation(k: int, angle: float) -> np.ndarray:

@@ -125,22 +125,72 @@ def converged_message(iterations: int, position: float, orientation: float) -> s
     return f"converged after {iterations} iterations: error {_errors(position, orientation, 2)}"
 
 
-def beyond_reach_message(reach: Reach, point: np.ndarray, distance: float) -> str:
-    """A target outside the reach sphere or inside the hole, with the shell's numbers."""
+def beyond_reach_message(
+    reach: Reach, point: np.ndarray, distance: float, closest: float | None = None
+) -> str:
+    """A target proved out of reach, with the numbers of the bound that proves it; and,
+    when the closest configuration found stays farther (``closest``), how far."""
     where = (
         "the base origin"
         if reach.axis_joint is None
         else f"{_point(reach.center)} on joint {reach.axis_joint + 1}'s axis"
     )
     radius = float(np.linalg.norm(point - reach.center))
-    if radius > reach.outer:
-        return (
+    sphere = float(reach.sphere_distance(point[np.newaxis])[0])
+    cylinder = reach.cylinder
+    if cylinder is not None and distance > sphere:
+        text = f"the target is {_number(distance)} out of reach: {_cylinder_text(reach, point)}"
+    elif radius > reach.outer:
+        text = (
             f"the target is {_number(distance)} beyond the reach (reach sphere radius "
             f"{_number(reach.outer)} about {where})"
         )
+    else:
+        text = (
+            f"the target is {_number(distance)} inside the hole the arm cannot reach (no "
+            f"point closer than {_number(reach.inner)} to {where})"
+        )
+    if closest is not None:
+        text += f"; the closest configuration found misses it by {_number(closest)}"
+    return text
+
+
+def _cylinder_text(reach: Reach, point: np.ndarray) -> str:
+    """Where an arm with parallel revolute axes keeps its end effector, and the target."""
+    cylinder = reach.cylinder
+    assert cylinder is not None
+    direction = _point(cylinder.direction)
+    planar = cylinder.high - cylinder.low <= 1e-12 * max(1.0, abs(cylinder.high))
+    if planar:
+        stays = f"in the plane at height {_number(cylinder.low)} along {direction}"
+    else:
+        stays = (
+            f"between heights {_number(cylinder.low)} and {_number(cylinder.high)} along "
+            f"{direction}"
+        )
+    height = float(point @ cylinder.direction)
+    off, across = (float(v[0]) for v in cylinder.parts(point[np.newaxis]))
+    parts = [f"at height {_number(height)}"]
+    rho, outer = 0.0, 0.0
+    if cylinder.radii is not None:
+        inner, outer = cylinder.radii
+        axis = "" if reach.axis_joint is None else f" joint {reach.axis_joint + 1}'s axis"
+        stays += f", {_number(inner)} to {_number(outer)} from{axis}"
+        rho = float(
+            np.linalg.norm(
+                (point - cylinder.point)
+                - ((point - cylinder.point) @ cylinder.direction) * cylinder.direction
+            )
+        )
+        parts.append(f"{_number(rho)} from that axis")
+    missing = []
+    if off > 0:
+        missing.append(f"{_number(off)} off {'that plane' if planar else 'those heights'}")
+    if across > 0:
+        missing.append(f"{_number(across)} {'beyond' if rho > outer else 'inside'} those radii")
     return (
-        f"the target is {_number(distance)} inside the hole the arm cannot reach (no "
-        f"point closer than {_number(reach.inner)} to {where})"
+        f"the end effector stays {stays}; the target is {' and '.join(parts)} "
+        f"({' and '.join(missing)})"
     )
 
 

@@ -1,8 +1,9 @@
 """The starts of :func:`~robotconf.ik`, tried in turn per target but run in waves.
 
 Each target has a sequence of **runs**: one within the joint ranges from each start
-(``q0``, then the random ones), and, on a robot with clipped joints, the same starts once
-more without the ranges (a solution then turned by whole turns to fit them). The answer
+(``q0``, then the random ones, nearest first: :func:`nearest_first`), and, on a robot
+with clipped joints, the same starts once more without the ranges (a solution then
+turned by whole turns to fit them). The answer
 is the first run in this order that converges, or the closest of all when none does;
 ``iterations`` adds up the steps of every run up to it.
 
@@ -27,7 +28,7 @@ from ._lm import CONVERGED, STALLED, Run, solve
 from ._problem import Problem
 from ._reasons import fit_into_limits
 
-__all__ = ["Search", "search", "WAVE_RUNS"]
+__all__ = ["Search", "search", "nearest_first", "WAVE_RUNS"]
 
 #: A wave holds up to max(T, this) runs.
 WAVE_RUNS = 128
@@ -117,7 +118,7 @@ def search(
     draws : ndarray, shape (S − 1, n)
         The random starts, the same for every target.
     proved : ndarray of bool, shape (T,)
-        Targets proved out of reach: they get their first start only, within the ranges.
+        Targets proved out of reach: no runs here (they keep their first start).
     max_iterations : int
         Most steps per run.
     limits : bool
@@ -133,13 +134,19 @@ def search(
     clipped = bool(np.any(problem.moving & ~problem.wraps))
     retries = limits and clipped
     # Runs per target: the starts within the ranges, then (retries) the same starts
-    # without them; a target proved out of reach gets its first start only.
-    length = np.where(proved, 1, starts * (2 if retries else 1))
+    # without them; a target proved out of reach gets none: the second-order descent
+    # (``_closest``) takes it from its first start to the closest configuration.
+    length = np.where(proved, 0, starts * (2 if retries else 1))
     done = np.zeros(count, dtype=int)  # runs read so far, per target
+    # Each target's random starts, nearest first (ranked once its first start failed).
+    ranking = np.zeros((count, len(draws)), dtype=int)
     while True:
         open_ = np.flatnonzero((state.status != CONVERGED) & (done < length))
         if not open_.size:
             return state
+        fresh = open_[done[open_] == 1]
+        if fresh.size and len(draws):
+            ranking[fresh] = nearest_first(problem, fresh, draws)
         # The first wave is every target's first start alone: from a q0 near the answer,
         # as when following a moving target, that is all it takes.
         width = max(1, max(count, WAVE_RUNS) // open_.size) if done.any() else 1
@@ -150,7 +157,7 @@ def search(
         attempt, free = item % starts, item >= starts
         start = first[target]
         later = attempt > 0
-        start[later] = draws[attempt[later] - 1]
+        start[later] = draws[ranking[target[later], attempt[later] - 1]]
         # A run without the ranges decides nothing by converging: its twin may not fit.
         run = solve(
             problem, target, start, max_iterations, limits & ~free, order=item, decisive=~free
@@ -165,3 +172,18 @@ def search(
             else:
                 state.read_limited(target[rows], part)
         done[open_] += ahead
+
+
+def nearest_first(problem: Problem, index: np.ndarray, draws: np.ndarray) -> np.ndarray:
+    """The random starts ranked for each target ``index`` (k,), nearest first: by the
+    error (in the solver's units) their end-effector poses leave, ties in draw order.
+
+    Depends on the target and the draws only, so a target ranks them the same alone or
+    among others. Returns (k, S − 1) indices into ``draws``.
+    """
+    count = len(draws)
+    pose = problem.robot.end_effector_pose(problem.project(draws, False))
+    targets = np.repeat(index, count)
+    error = problem.errors_from_pose(targets, np.tile(pose, (len(index), 1, 1)))
+    energy = problem.energy(error).reshape(len(index), count)
+    return np.argsort(energy, axis=1, kind="stable")

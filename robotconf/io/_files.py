@@ -22,6 +22,7 @@ from .._validation import Rejected, check_json_object, one_line
 from ..motion import SimulationSettings
 from ..programs import Program
 from ..signals import Constant, Signal, signal_from_dict
+from ._program_schema import program_from_dict, program_to_dict
 from ._schema import (
     FORMAT,
     VERSION,
@@ -34,7 +35,15 @@ from ._schema import (
 if TYPE_CHECKING:
     from ..kinematics import Robot
 
-__all__ = ["Setup", "load", "load_setup", "parse_json", "MAX_BYTES"]
+__all__ = [
+    "Setup",
+    "load",
+    "load_setup",
+    "load_program",
+    "program_to_json",
+    "parse_json",
+    "MAX_BYTES",
+]
 
 #: Largest file (or text) robotconf reads: 1 MB. 64 links with a signal each take ~50 kB.
 MAX_BYTES = 1_000_000
@@ -217,7 +226,7 @@ class Setup:
         if self.simulation is not None:
             data["simulation"] = self.simulate_kwargs()
         if self.program is not None:
-            data["program"] = self.program.to_dict()
+            data["program"] = program_to_dict(self.program)
         return data
 
     def to_json(self, indent: int | None = 2) -> str:
@@ -261,7 +270,7 @@ class Setup:
             robot,
             signals,
             None if simulation is None else check_simulation(simulation),
-            None if program is None else Program.from_dict(program, robot),
+            None if program is None else program_from_dict(program, robot),
         )
 
     @classmethod
@@ -342,6 +351,43 @@ def load_setup(source: str | bytes | os.PathLike[str]) -> Setup:
     else:
         raise InvalidInputError("source", source, "a path, JSON text or bytes", problem="not:")
     return Setup.from_json(text)
+
+
+def program_to_json(program: Program, indent: int | None = 2) -> str:
+    """A robotconf file's text holding a program's robot and the program.
+
+    >>> import robotconf as rc
+    >>> prog = rc.Program(rc.preset("paper"), [rc.PTP(q=[0, 0.3, -0.5])])
+    >>> load_program(program_to_json(prog)) == prog
+    True
+    """
+    if not isinstance(program, Program):
+        raise InvalidInputError("program", one_line(program), "a Program", problem="not a program:")
+    return Setup(program.robot, program=program).to_json(indent)
+
+
+def load_program(source: str | bytes | os.PathLike[str]) -> Program:
+    """The robot program of a robotconf file (a path, its text or bytes; its robot comes along).
+
+    Raises
+    ------
+    InvalidInputError
+        As :func:`load_setup`; ``program`` when the file holds none.
+
+    Examples
+    --------
+    >>> import robotconf as rc
+    >>> load_program(rc.preset("paper").to_json())
+    Traceback (most recent call last):
+    ...
+    robotconf.InvalidInputError: program: missing: None; allowed: a robotconf file with ...
+    """
+    program = load_setup(source).program
+    if program is None:
+        raise InvalidInputError(
+            "program", None, 'a robotconf file with a "program" section', problem="missing:"
+        )
+    return program
 
 
 def load(path: str | os.PathLike[str]) -> Robot:

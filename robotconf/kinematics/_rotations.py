@@ -21,6 +21,10 @@ from .._validation import as_float_array, one_line
 
 __all__ = ["rotation_vector", "rotation_matrix", "rpy_from_matrix", "matrix_from_rpy"]
 
+#: Below this ``cos(pitch)`` (round-off: gimbal lock) :func:`rpy_from_matrix` sets yaw to 0;
+#: doing so moves the rebuilt rotation by at most π·cos(pitch).
+_GIMBAL_LOCK = 1e-17
+
 
 def _skew_part(r: np.ndarray) -> np.ndarray:
     return np.stack(
@@ -136,7 +140,20 @@ def rpy_from_matrix(rotation: Any) -> tuple[float, float, float]:
     Returns
     -------
     (roll, pitch, yaw) : floats, radians
-        With pitch in [−π/2, π/2]; at pitch = ±π/2 (gimbal lock) yaw is set to 0.
+        With pitch in [−π/2, π/2]; where ``cos(pitch)`` is below 1e-17 (gimbal lock: only
+        roll − yaw or roll + yaw is defined) yaw is set to 0.
+
+    Notes
+    -----
+    ``pitch = atan2(−r₂₀, √(r₀₀² + r₁₀²))`` and ``yaw = atan2(r₁₀, r₀₀)``; roll is then read
+    from what is left once yaw is undone, ``Rz(−yaw)·R = Ry(pitch)·Rx(roll)``, whose middle
+    row is ``(0, cos roll, −sin roll)`` whatever the pitch:
+    ``roll = atan2(sin(yaw)·r₀₂ − cos(yaw)·r₁₂, cos(yaw)·r₁₁ − sin(yaw)·r₀₁)``. Near
+    pitch = ±90° the yaw comes from two tiny entries and is only known to about
+    ``ε / cos(pitch)``, but roll absorbs that error exactly (only roll ∓ yaw matters
+    there), so ``matrix_from_rpy`` rebuilds the rotation to round-off everywhere. Reading
+    roll from ``r₂₁, r₂₂`` instead, the usual formula, divides their rounding by
+    ``cos(pitch)`` and misses by up to 1e-8 next to the lock.
 
     Examples
     --------
@@ -154,8 +171,7 @@ def rpy_from_matrix(rotation: Any) -> tuple[float, float, float]:
         )
     cos_pitch = math.hypot(r[0, 0], r[1, 0])
     pitch = math.atan2(-r[2, 0], cos_pitch)
-    if cos_pitch > 1e-12:
-        return (math.atan2(r[2, 1], r[2, 2]), pitch, math.atan2(r[1, 0], r[0, 0]))
-    # Gimbal lock: only roll − yaw (or roll + yaw) is defined; with yaw = 0 the middle
-    # row of Ry(pitch)·Rx(roll) is (0, cos roll, −sin roll).
-    return (math.atan2(-r[1, 2], r[1, 1]), pitch, 0.0)
+    yaw = math.atan2(r[1, 0], r[0, 0]) if cos_pitch > _GIMBAL_LOCK else 0.0
+    cy, sy = math.cos(yaw), math.sin(yaw)
+    roll = math.atan2(sy * r[0, 2] - cy * r[1, 2], cy * r[1, 1] - sy * r[0, 1])
+    return (roll, pitch, yaw)

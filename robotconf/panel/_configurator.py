@@ -147,6 +147,7 @@ class Configurator:
         self._history: History[Document] = History(state.document)
         self._layout = 0  # bumped when what a control means changes (rows, units)
         self.feedback = Feedback()
+        self.feedback.show_in(state.units)
         self._rendering = False
         # -- the views --------------------------------------------------------------
         self.title = widgets.HTML("<h3 style='margin:4px 0'>robotconf configurator</h3>")
@@ -354,6 +355,7 @@ class Configurator:
         if new.robot is not old.robot and not moved_only and new.robot.n != old.robot.n:
             self.editor.ranges.forget()
         self._state = new
+        self.feedback.show_in(new.units)
         self._render(old)
         if new.document is not old.document:
             self.binding.changed()

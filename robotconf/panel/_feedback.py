@@ -11,6 +11,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from .state import Units, in_units
 from .support import LOGGER, Refusal, failure_message
 
 __all__ = ["Feedback", "Refusal", "failure_message", "LOGGER"]
@@ -33,6 +34,14 @@ class Feedback:
         self._messages: dict[str, tuple[str, str | None]] = {}
         #: Bumped at every change, so a view can tell whether to draw again.
         self.version = 0
+        #: The panel's units: messages speak them (:func:`~.state.in_units`).
+        self.units = Units()
+
+    def show_in(self, units: Units) -> None:
+        """Say every message in ``units`` from now on (the student switched units)."""
+        if units != self.units:
+            self.units = units
+            self.version += 1
 
     def refused(self, key: str, message: str, typed: str | None = None) -> None:
         """Show ``message`` beside control ``key`` (and keep ``typed`` in its box)."""
@@ -53,7 +62,7 @@ class Feedback:
     def message(self, key: str) -> str:
         """The message beside ``key`` (``""`` for none)."""
         found = self._messages.get(key)
-        return found[0] if found else ""
+        return in_units(found[0], self.units) if found else ""
 
     def typed(self, key: str) -> str | None:
         """What the student typed into ``key`` that was refused, if anything."""
@@ -63,7 +72,7 @@ class Feedback:
     def items(self) -> Iterator[tuple[str, str]]:
         """``(key, message)`` of every message shown."""
         for key, (message, _) in self._messages.items():
-            yield key, message
+            yield key, in_units(message, self.units)
 
     def under(self, prefix: str) -> Iterator[tuple[str, str]]:
         """``(key, message)`` of the messages of controls whose key starts with ``prefix``."""

@@ -6,7 +6,7 @@ or quintic profile; LIN and CIRC move the end effector along an exact line or ci
 arc at a trapezoidal path speed, solved by ``rc.ik`` at every sample.
 
 Programs
-    :class:`Program` (``check``, ``simulate``, ``to_json``/``from_json``),
+    :class:`Program` (``check``, ``simulate``; files: :mod:`robotconf.io`),
     :class:`PTP`, :class:`LIN`, :class:`CIRC`, :class:`Wait`, :class:`Move`
 Results
     :class:`ProgramMotion` (a :class:`~robotconf.motion.Motion` with its moves),
@@ -32,7 +32,6 @@ from ._plan import PATH_TOL, Segment
 from ._profiles import PROFILES, Profile, quintic, trapezoidal
 from ._program import MAX_MOVES, SINGULARITY_TOL, Program
 from ._report import VIOLATIONS, ProgramReport, Violation
-from ._serialize import program_from_dict, program_to_dict
 
 __all__ = [
     # programs
@@ -64,7 +63,4 @@ __all__ = [
     "arc_path",
     "Limits",
     "resolve_limits",
-    # files
-    "program_to_dict",
-    "program_from_dict",
 ]

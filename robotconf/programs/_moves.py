@@ -1,21 +1,24 @@
 """The moves of a robot program: PTP, LIN, CIRC and Wait (docs/programs.md).
 
-A move records what was asked; :class:`~robotconf.programs.Program` checks it against
-the robot (so an error names ``moves[i].field``) and keeps the checked copy, whose
-numbers are plain floats and tuples. ``to_dict`` gives the JSON form of a move.
+A move records what was asked. Making one checks that its numbers are numbers within the
+program bounds (finite, ``|x| ≤ 1e150``, rates from 1e-150 to 1e150, see
+:mod:`robotconf.programs._inputs`), so an error names the field at once;
+:class:`~robotconf.programs.Program` checks it again against the robot (so an error names
+``moves[i].field``) and keeps the checked copy, whose numbers are plain floats and tuples.
+``to_dict`` gives the JSON form of a move.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from dataclasses import dataclass, fields, replace
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field, fields, replace
 from typing import Any, ClassVar
 
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import check_configuration
-from ._inputs import choice, point, pose, positive, seconds
+from .._validation import check_configuration, one_line
+from ._inputs import check_move_numbers, choice, point, pose, positive, seconds
 from ._profiles import PROFILES
 
 __all__ = ["Move", "PTP", "LIN", "CIRC", "Wait", "ORIENTATIONS", "MOVE_TYPES"]
@@ -54,6 +57,9 @@ class Move:
 
     kind: ClassVar[str] = ""
 
+    def __post_init__(self) -> None:
+        check_move_numbers(self)
+
     def _key(self) -> tuple[Any, ...]:
         return tuple(_frozen(getattr(self, f.name)) for f in fields(self))
 
@@ -67,15 +73,51 @@ class Move:
         return hash((self.kind, *self._key()))
 
     def to_dict(self) -> dict[str, Any]:
-        """The move as JSON data: ``{"type": "LIN", field: value, …}`` (every field)."""
+        """The move as JSON data: ``{"type": "LIN", field: value, …}`` (every field; a
+        cell ``frame`` only when the move names one)."""
         data: dict[str, Any] = {"type": self.kind}
         for f in fields(self):
-            data[f.name] = _plain(getattr(self, f.name))
+            if f.name != "frame" or getattr(self, f.name) is not None:
+                data[f.name] = _plain(getattr(self, f.name))
         return data
+
+    def resolved(self, lookup: Callable[[str], Any]) -> Move:
+        """The move with its cell frame replaced by the pose ``lookup(frame)`` gives.
+
+        A cell (``cell.program``, ``cell.run``) calls this with each frame's pose in the
+        robot's base frame; a move without a frame comes back unchanged.
+
+        >>> import numpy as np
+        >>> LIN(frame="table/pick").resolved(lambda name: np.eye(4)).pose[3]
+        (0.0, 0.0, 0.0, 1.0)
+        """
+        frame = getattr(self, "frame", None)
+        if frame is None:
+            return self
+        if not isinstance(frame, str):
+            raise InvalidInputError("frame", one_line(frame), _FRAME)
+        target = pose(lookup(frame), "frame")
+        key = "end" if isinstance(self, CIRC) else "pose"
+        changes: dict[str, Any] = {"frame": None, key: target}
+        return replace(self, **changes)
 
     def checked(self, n: int, names: Sequence[str]) -> Move:
         """A copy with every field validated and normalized (errors name the field)."""
         raise NotImplementedError
+
+
+#: What a move's ``frame`` names.
+_FRAME = "the name of a frame of a work cell ('table/pick'), resolved by the cell"
+
+
+def _unresolved(frame: Any) -> InvalidInputError:
+    """A move that names a cell frame, checked outside a cell."""
+    return InvalidInputError(
+        "frame",
+        one_line(frame),
+        "a point or pose target here; a frame target in cell.program(…) or cell.run(…)",
+        problem="a cell frame outside a cell:",
+    )
 
 
 def _one_target(move: Move, names: tuple[str, ...]) -> str:
@@ -104,6 +146,8 @@ class PTP(Move):
         Target end-effector pose, solved by ``rc.ik`` from the previous move's end.
     position : array-like, shape (3,), optional
         Target end-effector point, solved likewise. Give exactly one target.
+    frame : str, optional
+        A work cell's frame (``"table/pick"``), resolved to a pose by the cell.
     profile : {"trapezoidal", "quintic"}
         Time law; both respect the program's joint speed and acceleration limits.
 
@@ -118,9 +162,12 @@ class PTP(Move):
     pose: Any = None
     position: Any = None
     profile: str = "trapezoidal"
+    frame: Any = field(default=None, repr=False)
 
     def checked(self, n: int, names: Sequence[str]) -> PTP:
-        target = _one_target(self, ("q", "pose", "position"))
+        target = _one_target(self, ("q", "pose", "position", "frame"))
+        if target == "frame":
+            raise _unresolved(self.frame)
         profile = choice(self.profile, "profile", PROFILES)
         if target == "q":
             values = check_configuration(self.q, n, names, "q")
@@ -140,6 +187,8 @@ class LIN(Move):
         Target point (length); the orientation is held.
     pose : array-like, shape (4, 4), optional
         Target pose; the orientation turns from the start's to the pose's (slerp).
+    frame : str, optional
+        A work cell's frame (``"table/pick"``): its pose, resolved by the cell.
     speed : float, optional
         Path speed (length/s), > 0; default the program's ``cartesian_speed``.
     accel : float, optional
@@ -159,9 +208,12 @@ class LIN(Move):
     speed: Any = None
     accel: Any = None
     orientation: str = "slerp"
+    frame: Any = field(default=None, repr=False)
 
     def checked(self, n: int, names: Sequence[str]) -> LIN:
-        target = _one_target(self, ("position", "pose"))
+        target = _one_target(self, ("position", "pose", "frame"))
+        if target == "frame":
+            raise _unresolved(self.frame)
         speed = _optional(self.speed, "speed", "a path speed (length/s)")
         accel = _optional(self.accel, "accel", "a path acceleration (length/s²)")
         orientation = choice(self.orientation, "orientation", ORIENTATIONS)
@@ -187,6 +239,8 @@ class CIRC(Move):
         A point of the arc (length); with the start and ``end`` it fixes the circle.
     end : array-like, shape (3,) or (4, 4)
         The end point, or the end pose (its orientation is reached by slerp).
+    frame : str, optional
+        Instead of ``end``: a work cell's frame, resolved to the end pose by the cell.
     speed, accel, orientation
         As for :class:`LIN`.
 
@@ -202,8 +256,15 @@ class CIRC(Move):
     speed: Any = None
     accel: Any = None
     orientation: str = "slerp"
+    frame: Any = field(default=None, repr=False)
 
     def checked(self, n: int, names: Sequence[str]) -> CIRC:
+        if self.frame is not None:
+            if self.end is not None:
+                raise InvalidInputError(
+                    "frame", self.frame, "end or frame, not both", "both given:"
+                )
+            raise _unresolved(self.frame)
         if self.via is None or self.end is None:
             missing = "via" if self.via is None else "end"
             raise InvalidInputError(missing, None, "a point (3 numbers)", problem="missing:")
@@ -231,6 +292,22 @@ class Wait(Move):
 
     def checked(self, n: int, names: Sequence[str]) -> Wait:
         return replace(self, seconds=seconds(self.seconds, "seconds"))
+
+
+def _shows_frame(cls: type[Move]) -> None:
+    """A move's repr names its cell frame only when it has one (as ``to_dict`` writes it)."""
+    plain = cls.__repr__
+
+    def __repr__(self: Move) -> str:
+        text = plain(self)
+        frame = getattr(self, "frame", None)
+        return text if frame is None else f"{text[:-1]}, frame={frame!r})"
+
+    cls.__repr__ = __repr__  # type: ignore[method-assign,assignment]
+
+
+for _cls in (PTP, LIN, CIRC):
+    _shows_frame(_cls)
 
 
 #: Move type name (the JSON ``"type"``) → class.

@@ -16,6 +16,7 @@ from .._errors import InvalidInputError
 from .._validation import one_line
 from ..inverse_kinematics import IKResult, ik
 from ._chain import Chain, kinematics
+from ._inputs import check_duration
 from ._limits import Limits
 from ._moves import CIRC, LIN, PTP, Move, Wait
 from ._paths import CartesianPath, arc_path, line_path
@@ -147,8 +148,10 @@ def _joint_profile(delta: np.ndarray, limits: Limits, kind: str) -> Profile:
     moves = np.abs(delta) > 0.0
     if not moves.any():
         return still(0.0)
-    speed = float(np.min(limits.joint_speed[moves] / np.abs(delta[moves])))
-    accel = float(np.min(limits.joint_accel[moves] / np.abs(delta[moves])))
+    # A step of 1e-300 at a speed of 1e150 overflows: _check_time refuses that time law.
+    with np.errstate(over="ignore"):
+        speed = float(np.min(limits.joint_speed[moves] / np.abs(delta[moves])))
+        accel = float(np.min(limits.joint_accel[moves] / np.abs(delta[moves])))
     return quintic(speed, accel) if kind == "quintic" else trapezoidal(speed, accel)
 
 
@@ -184,7 +187,7 @@ def _path(chain: Chain, move: LIN | CIRC, q0: np.ndarray) -> tuple[CartesianPath
         if path.length <= ZERO_PATH * chain.length and path.angle <= ZERO_PATH:
             raise InvalidInputError(
                 field,
-                one_line(goal_array),
+                tuple(float(v) for v in p1),  # the point, also for a pose target
                 "a target away from the start (for no motion use Wait)",
                 problem="the LIN goes nowhere: the end effector is already at",
             )
@@ -268,6 +271,27 @@ def _cartesian(
     return q[-1].copy(), profile, path, make_knots(chain, path, u, q)
 
 
+def _check_time(i: int, move: Move, profile: Profile, limits: Limits) -> None:
+    """Refuse a move whose time law overflowed or runs past ``MAX_TIME``, naming the
+    speed or acceleration that sets it: the move's own (``moves[i].speed``) or the
+    program's (``cartesian_speed``, ``joint_speed``, …)."""
+    rate = "accel" if 2.0 * profile.blend >= profile.duration > 0.0 else "speed"
+    own = isinstance(move, (LIN, CIRC)) and getattr(move, rate) is not None
+    if own:
+        field, value = rate, getattr(move, rate)
+    elif isinstance(move, Wait):
+        field, value, own = "seconds", move.seconds, True
+    else:
+        field = ("joint_" if isinstance(move, PTP) else "cartesian_") + rate
+        setting = getattr(limits, field)
+        value = tuple(setting.tolist()) if isinstance(setting, np.ndarray) else setting
+    what = f"move {i + 1} ({move.kind})"
+    try:
+        check_duration(profile.duration, (profile.speed, profile.accel), field, value, what)
+    except InvalidInputError as error:
+        raise (error.within(f"moves[{i}]") if own else error) from None
+
+
 def plan(chain: Chain, moves: Sequence[Move], start: np.ndarray, limits: Limits) -> list[Segment]:
     """Plan every move in turn from ``start``; errors are named ``moves[i].field``."""
     segments: list[Segment] = []
@@ -287,6 +311,7 @@ def plan(chain: Chain, moves: Sequence[Move], start: np.ndarray, limits: Limits)
                 raise TypeError(type(move).__name__)
         except InvalidInputError as error:
             raise error.within(f"moves[{i}]") from None
+        _check_time(i, move, profile, limits)
         point1 = _ee(chain, q1)[:3, 3]
         via = np.array(move.via) if isinstance(move, CIRC) else None
         ends = (q0, q1, point0, point1)
@@ -294,4 +319,5 @@ def plan(chain: Chain, moves: Sequence[Move], start: np.ndarray, limits: Limits)
             Segment(i, move.kind, t, profile.duration, *ends, profile, path, via, knots)
         )
         q0, t, point0 = q1, t + profile.duration, point1
+    check_duration(t, (), "moves", f"<{len(moves)} moves>", "the program")
     return segments

@@ -13,6 +13,7 @@ from .._validation import check_configuration, check_finite_number, one_line
 from ..kinematics import Robot
 from ..motion import analytic_dva
 from ._chain import Chain, make_chain
+from ._inputs import check_move_numbers
 from ._limits import LIMIT_NAMES, Limits, check_given, resolve_limits
 from ._motion import ProgramMotion
 from ._moves import Move
@@ -49,6 +50,7 @@ def _check_moves(moves: Any, n: int, names: Sequence[str]) -> tuple[Move, ...]:
                 problem="not a move:",
             )
         try:
+            check_move_numbers(move)
             checked.append(move.checked(n, names))
         except InvalidInputError as error:
             raise error.within(f"moves[{i}]") from None
@@ -301,63 +303,3 @@ class Program:
             program=self,
             report=report,
         )
-
-    # -- files --------------------------------------------------------------------------
-
-    def to_dict(self) -> dict[str, Any]:
-        """The program as JSON data: ``start``, the limits and ``moves`` (no robot)."""
-        from ._serialize import program_to_dict
-
-        return program_to_dict(self)
-
-    @classmethod
-    def from_dict(cls, data: Any, robot: Robot, path: str = "program") -> Program:
-        """A program for ``robot`` from JSON data; errors are named ``path.moves[i]…``.
-
-        >>> import robotconf as rc
-        >>> data = {"moves": [{"type": "Wait", "seconds": 2}]}
-        >>> Program.from_dict(data, rc.preset("paper")).duration
-        2.0
-        """
-        from ._serialize import program_from_dict
-
-        return program_from_dict(data, robot, path)
-
-    def to_json(self, indent: int | None = 2) -> str:
-        """A robotconf file holding the robot and this program (docs/file-format.md).
-
-        >>> import robotconf as rc
-        >>> from robotconf.programs import PTP
-        >>> prog = Program(rc.preset("paper"), [PTP(q=[0, 0.3, -0.5])])
-        >>> Program.from_json(prog.to_json()) == prog
-        True
-        """
-        from ..io import Setup
-
-        return Setup(self._robot, program=self).to_json(indent)
-
-    @classmethod
-    def from_json(cls, text: str) -> Program:
-        """The program of a robotconf file's text (its robot comes along).
-
-        Raises
-        ------
-        InvalidInputError
-            Named by the file's JSON path; ``program`` when the file holds none.
-
-        Examples
-        --------
-        >>> import robotconf as rc
-        >>> Program.from_json(rc.preset("paper").to_json())
-        Traceback (most recent call last):
-        ...
-        robotconf.InvalidInputError: program: missing: None; allowed: a robotconf file with ...
-        """
-        from ..io import Setup
-
-        program = Setup.from_json(text).program
-        if program is None:
-            raise InvalidInputError(
-                "program", None, 'a robotconf file with a "program" section', problem="missing:"
-            )
-        return program

@@ -23,7 +23,7 @@ _ABOUT = {
     "q.png": "driven coordinates over time (Figure 16)",
     "dva_EE.png": "EE displacement, velocity, acceleration (Figures 17-19)",
     "scene.html": "animated 3D scene, opens offline in a browser",
-    "program.json": "the robot program that was run (rc.Program.from_json)",
+    "program.json": "the robot program that was run (rc.load_program)",
 }
 
 

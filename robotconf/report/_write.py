@@ -7,6 +7,7 @@ from collections.abc import Callable, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING
 
+from ..io import program_to_json
 from ._bad_input import BadInput
 from ._steps import (
     check_finite,
@@ -113,7 +114,7 @@ def write_report(
         raise BadInput(f"--out: cannot create {str(out)!r}: {error.strerror or error}") from None
     files = write_matrices(robot, out, state)
     if program is not None:
-        (out / "program.json").write_text(program.to_json() + "\n", encoding="utf-8")
+        (out / "program.json").write_text(program_to_json(program) + "\n", encoding="utf-8")
         files.append("program.json")
     skipped = {"off": " (symbolic: --no-symbolic)", "too long": " (symbolic: chain too long)"}
     say(f"[3/{total}] {', '.join(files)}{skipped.get(state, '')}")

@@ -1,10 +1,11 @@
 """The viewer's JavaScript: meshcat's bundled three.js viewer and robotconf's glue.
 
-meshcat's viewer (``viewer/dist/main.min.js``) ships inside the ``meshcat`` wheel, not in
-robotconf. It is located through the import system *without running* meshcat's
-``__init__``: that would load pyzmq, tornado, Pillow and IPython's shell for meshcat's
-server, none of which a notebook needs and none of which exists in a browser kernel
-(Pyodide, JupyterLite). Only the file is read; no meshcat Python code runs.
+meshcat's viewer (``main.min.js``) is copied into robotconf when it is built
+(``js/meshcat/``, with its license; see ``setup.py``): robotconf never runs meshcat's
+Python, whose package is a ZeroMQ server (pyzmq, tornado, pyngrok, ...) that a notebook
+does not need and a browser kernel (Pyodide, JupyterLite) cannot install. A source
+checkout that was not built falls back to an installed ``meshcat`` package, located
+through the import system *without running* its ``__init__``: only the file is read.
 """
 
 from __future__ import annotations
@@ -17,18 +18,21 @@ __all__ = ["meshcat_bundle", "meshcat_source", "script"]
 
 _JS = Path(__file__).parent / "js"
 
-#: Where the viewer bundle sits inside the installed ``meshcat`` package.
+#: The viewer bundle as robotconf's build copies it in.
+PACKAGED = _JS / "meshcat" / "main.min.js"
+
+#: Where the viewer bundle sits inside an installed ``meshcat`` package.
 BUNDLE = ("viewer", "dist", "main.min.js")
 
 _INSTALL = (
-    "robotconf's 3D scene runs meshcat's three.js viewer, read from the installed meshcat "
-    "package ({problem}). Install it with `pip install meshcat` (in JupyterLite: "
-    "`await piplite.install('meshcat', deps=False)`), then restart the kernel."
+    "robotconf's 3D scene runs meshcat's three.js viewer, which robotconf's build copies "
+    "into the package ({problem}). Reinstall robotconf from its wheel, or install the "
+    "viewer's source with `pip install meshcat`, then restart the kernel."
 )
 
 
 def meshcat_bundle() -> Path:
-    """The path of meshcat's viewer bundle, found without importing meshcat.
+    """The path of meshcat's viewer bundle: robotconf's own copy, else meshcat's package.
 
     Returns
     -------
@@ -37,17 +41,19 @@ def meshcat_bundle() -> Path:
     Raises
     ------
     RuntimeError
-        meshcat is not installed, or its package holds no viewer bundle.
+        Neither robotconf's build nor an installed meshcat package has the bundle.
 
     Examples
     --------
     >>> meshcat_bundle().name
     'main.min.js'
     """
+    if PACKAGED.is_file():
+        return PACKAGED
     # find_spec on a top-level name only searches sys.path: the package is not executed.
     spec = find_spec("meshcat")
     if spec is None or not spec.submodule_search_locations:
-        raise RuntimeError(_INSTALL.format(problem="meshcat is not installed"))
+        raise RuntimeError(_INSTALL.format(problem="this copy of robotconf was not built"))
     for folder in spec.submodule_search_locations:
         bundle = Path(folder).joinpath(*BUNDLE)
         if bundle.is_file():

@@ -1,12 +1,18 @@
-"""The scene's messages: meshcat commands, batched transforms and label texts.
+"""The scene's messages: meshcat commands, batched transforms and label texts, and where
+they go.
 
 A scene speaks meshcat's own command language (``set_object``, ``set_property``,
 ``delete``, ``set_animation``; three.js JSON built by :mod:`robotconf.scene._three`, packed
-with msgpack when it holds typed arrays, as meshcat's viewer decodes it) plus two batched
-operations that keep a slider fast: all transforms of one update in one binary
-buffer, and all label texts in one list. An :class:`Op` is a JSON-able dict plus its
-binary buffers; a :class:`SceneLog` keeps the latest op per key, so a new view, a page
-reload or an HTML export replays a compact scene instead of its whole history.
+with msgpack when it holds typed arrays, as meshcat's viewer decodes it) plus robotconf's
+own operations: two batched ones that keep a slider fast (all transforms of one update in
+one binary buffer, all label texts in one list), ``fit`` (the camera's distance),
+``playback`` (the page's player) and ``options`` (what the page's bar shows). An
+:class:`Op` is a JSON-able dict plus its binary buffers; a :class:`SceneLog` keeps the
+latest op per key, so a new view, a page reload or an HTML export replays a compact scene
+instead of its whole history. Every part of a scene (the robot, the ghosts, the target
+marker, the taught points, the player) gets the scene's :class:`Outbox` and nothing else
+of it: ``send`` gives ops to the views and records the state in the log, ``delete``
+removes a subtree from both, so a page reloaded after ``clear_ghosts()`` shows no ghost.
 """
 
 from __future__ import annotations
@@ -25,15 +31,20 @@ __all__ = [
     "RecordingChannel",
     "command_op",
     "set_object_op",
+    "meshcat_op",
     "transforms_op",
+    "wire_matrices",
     "labels_op",
     "fit_op",
-    "animation_op",
+    "playback_op",
+    "options_op",
     "pack_ops",
     "pack_command",
     "unpack_command",
     "shape_object",
     "ROOT",
+    "Outbox",
+    "log_key",
 ]
 
 #: Every robotconf object lives under this meshcat path.
@@ -58,9 +69,19 @@ def set_object_op(path: str, obj: dict[str, Any]) -> Op:
     Typed arrays (a triad's vertices, a point cloud) are msgpack extension types, which
     only the packed form carries; plain shapes stay readable JSON.
     """
-    command = {"type": "set_object", "path": path, "object": obj}
-    if _has_ext(obj):
-        return Op({"op": "packed", "type": "set_object", "path": path}, (pack_command(command),))
+    return meshcat_op({"type": "set_object", "path": path, "object": obj})
+
+
+def meshcat_op(command: dict[str, Any]) -> Op:
+    """A meshcat command as JSON, or msgpack-packed when it holds typed arrays (an
+    animation's keyframes, a point cloud).
+
+    >>> meshcat_op({"type": "delete", "path": "/a"}).content["op"]
+    'command'
+    """
+    if _has_ext(command):
+        content = {"op": "packed", "type": command["type"], "path": command.get("path", "")}
+        return Op(content, (pack_command(command),))
     return command_op(command)
 
 
@@ -92,8 +113,15 @@ def _has_ext(value: Any) -> bool:
     return False
 
 
-def transforms_op(paths: Sequence[str], matrices: np.ndarray) -> Op:
-    """All transforms of one update: paths and one float32 buffer, column-major 4×4 each.
+def wire_matrices(matrices: np.ndarray) -> np.ndarray:
+    """4×4 matrices (..., 4, 4) as the viewer reads them: float32 (what WebGL uses anyway)
+    and column-major (three.js ``Matrix4.fromArray``)."""
+    return np.ascontiguousarray(np.swapaxes(matrices, -1, -2), dtype=np.float32)
+
+
+def transforms_op(paths: Sequence[str], matrices: np.ndarray, *, wired: bool = False) -> Op:
+    """All transforms of one update: paths and one float32 buffer, column-major 4×4 each
+    (``wired``: the matrices are :func:`wire_matrices` already).
 
     Examples
     --------
@@ -101,24 +129,21 @@ def transforms_op(paths: Sequence[str], matrices: np.ndarray) -> Op:
     >>> op.content["paths"], len(op.buffers[0])
     (['/meshcat/a'], 64)
     """
-    # three.js Matrix4.fromArray reads column-major; float32 is what WebGL uses anyway.
-    data = np.ascontiguousarray(np.swapaxes(matrices, -1, -2), dtype=np.float32).tobytes()
+    data = (matrices if wired else wire_matrices(matrices)).tobytes()
     return Op({"op": "transforms", "paths": list(paths)}, (data,))
 
 
-def labels_op(paths: Sequence[str], texts: Sequence[str], rows: Sequence[int] | None = None) -> Op:
-    """New texts for existing label sprites (redrawn in place, no new objects).
+def labels_op(paths: Sequence[str], texts: Sequence[str]) -> Op:
+    """New texts for existing labels (an empty text draws nothing).
 
-    ``rows`` stacks labels whose points are close: row ``k`` is drawn ``k`` label heights
-    above its point, on screen, so near points keep readable labels at any zoom.
+    The page draws each text beside its anchor's point, on screen: it keeps labels clear
+    of each other, wraps long ones inside the pane and draws a leader line to the point
+    of a label it had to move away from it.
 
-    >>> labels_op(["/a", "/b"], ["M1", "M2"], [0, 1]).content["rows"]
-    [0, 1]
+    >>> labels_op(["/a", "/b"], ["M1", "M2"]).content["texts"]
+    ['M1', 'M2']
     """
-    content: dict[str, Any] = {"op": "labels", "paths": list(paths), "texts": list(texts)}
-    if rows is not None:
-        content["rows"] = [int(row) for row in rows]
-    return Op(content)
+    return Op({"op": "labels", "paths": list(paths), "texts": list(texts)})
 
 
 def fit_op(radius: float) -> Op:
@@ -133,21 +158,40 @@ def fit_op(radius: float) -> Op:
     return Op({"op": "fit", "radius": float(radius)})
 
 
-def animation_op(action: str, value: float | None = None) -> Op:
-    """Drive the loaded animation: ``play``, ``pause``, ``seek`` (clip seconds),
-    ``speed`` (time scale) or ``clear`` (drop it; the objects keep their transforms).
+def playback_op(action: str, **fields: Any) -> Op:
+    """Drive the page's player: ``load`` (with ``id``, ``duration``, ``speed``, ``time``,
+    ``playing``), ``play``, ``pause``, ``seek`` (``time``, motion seconds), ``speed``
+    (``value``) or ``clear`` (drop the animation; the objects keep their transforms).
 
-    >>> animation_op("seek", 1.5).content
-    {'op': 'animation', 'action': 'seek', 'value': 1.5}
+    >>> playback_op("seek", time=1.5).content
+    {'op': 'playback', 'action': 'seek', 'time': 1.5}
     """
-    content: dict[str, Any] = {"op": "animation", "action": action}
-    if value is not None:
-        content["value"] = float(value)
-    return Op(content)
+    return Op({"op": "playback", "action": action, **fields})
 
 
-def pack_ops(ops: Iterable[Op]) -> tuple[list[dict[str, Any]], list[bytes]]:
-    """Flatten ops into one message: each op's ``buffers`` become indices into one list.
+def options_op(labels: str, frames: bool, trace: bool, controls: bool) -> Op:
+    """What the page's bar shows as chosen: the labels mode, frames and trace switches, and
+    whether the bar is drawn at all.
+
+    >>> options_op("names", False, True, True).content["labels"]
+    'names'
+    """
+    return Op(
+        {
+            "op": "options",
+            "labels": labels,
+            "frames": bool(frames),
+            "trace": bool(trace),
+            "controls": bool(controls),
+        }
+    )
+
+
+def pack_ops(
+    ops: Iterable[Op], buffers: list[bytes] | None = None
+) -> tuple[list[dict[str, Any]], list[bytes]]:
+    """Flatten ops into one message: each op's ``buffers`` become indices into one list
+    (``buffers``, extended in place when given, so several lists can share it).
 
     Examples
     --------
@@ -156,7 +200,7 @@ def pack_ops(ops: Iterable[Op]) -> tuple[list[dict[str, Any]], list[bytes]]:
     ([0], 1)
     """
     contents: list[dict[str, Any]] = []
-    buffers: list[bytes] = []
+    buffers = [] if buffers is None else buffers
     for op in ops:
         content = dict(op.content)
         content["buffers"] = list(range(len(buffers), len(buffers) + len(op.buffers)))
@@ -219,7 +263,8 @@ class RecordingChannel:
         return [op for message in self.messages for op in message]
 
     def kinds(self) -> list[str]:
-        """``"labels"``, ``"transforms"``, ``"visible"`` or the meshcat command of every op."""
+        """``"labels"``, ``"transforms"``, ``"visible"``, ``"fit"``, ``"playback"``,
+        ``"options"`` or the meshcat command of every op."""
         return [_kind(op) for op in self.ops]
 
     def commands(self, kind: str) -> list[dict[str, Any]]:
@@ -250,7 +295,7 @@ def shape_object(shape: str, size: float, color: int) -> dict[str, Any]:
     ----------
     shape : {"sphere", "cylinder", "box", "triad", "label"}
     size : float
-        Radius, half-width, triad length or label height (length units).
+        Radius, half-width, triad length or a label's clearance (length units).
     color : int
         0xRRGGBB (ignored by triads and labels).
 
@@ -268,5 +313,69 @@ def shape_object(shape: str, size: float, color: int) -> dict[str, Any]:
     if shape == "triad":
         return _three.triad(size)
     if shape == "label":
-        return _three.label_sprite(size)
+        return _three.label_anchor(size)
     raise ValueError(f"shape: unknown shape {shape!r}")  # pragma: no cover - internal
+
+
+class Outbox:
+    """The scene's channel and log, as its parts use them.
+
+    Parameters
+    ----------
+    channel : object
+        Has ``send(ops)`` (a :class:`~robotconf.scene.RecordingChannel`, or the notebook
+        widget's channel).
+
+    Examples
+    --------
+    >>> from robotconf.scene import RecordingChannel
+    >>> outbox = Outbox(RecordingChannel())
+    >>> outbox.send([command_op({"type": "set_property", "path": "/a", "property": "visible",
+    ...                          "value": False})])
+    >>> outbox.delete("/a")
+    >>> outbox.channel.kinds(), len(outbox.log)
+    (['set_property', 'delete'], 0)
+    """
+
+    def __init__(self, channel: Any) -> None:
+        self.channel = channel
+        self.log = SceneLog()
+
+    def send(self, ops: list[Op], *, logged: list[Op] | None = None) -> None:
+        """Send ``ops`` to the live views; record ``logged`` (default: the same ops) as the
+        state a new view replays."""
+        for op in ops if logged is None else logged:
+            self.log.record(log_key(op), op)
+        if ops:
+            self.channel.send(ops)
+
+    def send_live(self, ops: list[Op]) -> None:
+        """Send ``ops`` to the live views only (a command, not a state)."""
+        if ops:
+            self.channel.send(ops)
+
+    def delete(self, path: str) -> None:
+        """Delete ``path`` and everything under it, in the views and in the log."""
+        self.log.forget(path)
+        # A new view has nothing there to delete: the delete itself is not logged.
+        self.channel.send([command_op({"type": "delete", "path": path})])
+
+
+def log_key(op: Op) -> tuple[str, str]:
+    """The log entry an op replaces: one per command and path, per batched op's paths,
+    one for the fit, the options and the animation.
+
+    >>> log_key(command_op({"type": "delete", "path": "/a"}))
+    ('delete', '/a')
+    """
+    content = op.content
+    kind = content["op"]
+    if kind == "command":
+        command = content["command"]
+        return (command["type"], command.get("path", ""))
+    if kind == "packed":
+        # Keyed like its JSON form: one packed set_object per path, not one for the scene.
+        return (content["type"], content["path"])
+    if kind in ("transforms", "labels", "visible"):
+        return (kind, "|".join(content["paths"]))
+    return (kind, "")

@@ -1,65 +1,42 @@
-"""Faint copies of a robot and a target marker: what inverse kinematics shows in the pane.
+"""Faint copies of a robot: what inverse kinematics shows in the pane beside the robot.
 
-:class:`Ghosts` is the part of :class:`~robotconf.scene.Scene` that draws
+:class:`GhostsLayer` is the part of :class:`~robotconf.scene.Scene` that draws **ghost
+robots**: semi-transparent copies of a robot at other coordinates (every closed-form
+solution of a target), under ``/meshcat/robotconf/ghosts``. A ghost has a body only, no
+frames and no labels: a number beside it would read as the robot's.
 
-- **ghost robots**: semi-transparent copies of a robot at other coordinates (every
-  closed-form solution of a target), under ``/meshcat/robotconf/ghosts``;
-- a **target marker**: a sphere at a point, plus an RGB triad for a pose, under
-  ``/meshcat/robotconf/target``; orange-red when the target cannot be reached.
-
-Both use the scene's own ops (meshcat ``set_object`` with transparent materials,
+Ghosts use the scene's own ops (meshcat ``set_object`` with transparent materials,
 transforms, visibility), so they need nothing new on the page, work offline, and sit in
-the scene log: a reloaded page, a second view and an HTML export show them too. Both live
+the scene log: a reloaded page, a second view and an HTML export show them too. They live
 beside the robot, not under it, so a rebuilt robot keeps them; their sizes follow the
-robot drawing's size, like the robot's own spheres and links.
+robot drawing's size, like the robot's own spheres and links. The target marker
+(:mod:`robotconf.scene._target`) shares their see-through look.
 """
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable
+from typing import Any
 
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import as_float_array, check_flag, check_joint_values, one_line
+from .._validation import check_joint_values, one_line
 from ..kinematics import Robot
-from ._commands import ROOT, Op, command_op, set_object_op, shape_object, transforms_op
-from ._drawing import SPHERE_RADIUS, TRIAD_LENGTH, RobotDrawing, structure_key
-from ._three import triad
+from ._commands import ROOT, Op, Outbox, set_object_op, shape_object, transforms_op
+from ._drawing import RobotDrawing, structure_of
 
-if TYPE_CHECKING:
-    from ._commands import SceneLog
-
-__all__ = [
-    "Ghosts",
-    "GHOSTS",
-    "TARGET",
-    "GHOST_OPACITY",
-    "TARGET_COLORS",
-    "MAX_GHOSTS",
-    "ghost_object",
-]
+__all__ = ["GhostsLayer", "GHOSTS", "GHOST_OPACITY", "MAX_GHOSTS", "ghost_object", "faint"]
 
 #: Ghost robots live under this path, one group per solution: ``…/ghosts/0``, ``…/1``.
 GHOSTS = f"{ROOT}/ghosts"
-#: The target marker's group: ``…/target/sphere`` and, for a pose, ``…/target/frame``.
-TARGET = f"{ROOT}/target"
 #: Opacity of a ghost's materials: visible, yet clearly not the robot.
 GHOST_OPACITY = 0.3
-#: The marker's colour (0xRRGGBB): violet for a target reached or reachable, orange-red
-#: for one that is not.
-TARGET_COLORS = {True: 0x9467BD, False: 0xFF4500}
-#: Opacity of the marker's sphere: the end-effector's red sphere shows through it.
-TARGET_OPACITY = 0.5
-#: The marker's radius, relative to the robot drawing's size (the EE sphere's is 0.042).
-TARGET_RADIUS = 1.6 * SPHERE_RADIUS
 #: More ghosts than any closed form gives (a 6R arm has at most 16 solutions).
 MAX_GHOSTS = 64
 
-_TARGET = "a point (3,) or a pose (4, 4) with last row [0, 0, 0, 1], in length units"
 
-
-def _faint(obj: dict[str, Any], opacity: float) -> dict[str, Any]:
+def faint(obj: dict[str, Any], opacity: float) -> dict[str, Any]:
     """The same three.js object with see-through materials that hide nothing behind them."""
     for material in obj["materials"]:
         # No depth writes: a ghost never hides the robot or another ghost behind it.
@@ -84,78 +61,42 @@ def ghost_object(shape: str, size: float, color: int) -> dict[str, Any]:
     >>> material["transparent"], material["opacity"], material["depthWrite"]
     (True, 0.3, False)
     """
-    return _faint(shape_object(shape, size, color), GHOST_OPACITY)
+    return faint(shape_object(shape, size, color), GHOST_OPACITY)
 
 
-def _check_target(value: Any) -> np.ndarray:
-    """A target as a 4×4 pose (a point gets the identity rotation); ``is_pose`` aside."""
-    array = as_float_array(value, "target", _TARGET)
-    if array.shape not in ((3,), (4, 4)):
-        raise InvalidInputError(
-            "target", one_line(value), _TARGET, problem=f"wrong shape {array.shape}:"
-        )
-    if not np.isfinite(array).all():
-        raise InvalidInputError("target", one_line(value), _TARGET, problem="NaN or infinity in")
-    if array.shape == (3,):
-        pose = np.eye(4)
-        pose[:3, 3] = array
-        return pose
-    if np.max(np.abs(array[3] - (0.0, 0.0, 0.0, 1.0))) > 1e-9:
-        raise InvalidInputError(
-            "target", one_line(value), _TARGET, problem="the last row is not [0, 0, 0, 1]:"
-        )
-    return array.copy()
+class GhostsLayer:
+    """Ghost robots beside the scene's robot.
 
-
-class Ghosts:
-    """The ghost and target methods of :class:`~robotconf.scene.Scene` (a mixin: the
-    scene provides ``_send``, ``_log`` and ``_require_drawing``).
+    Parameters
+    ----------
+    outbox : Outbox
+    size : callable
+        Returns the robot drawing's size (length units): ghosts are drawn at its scale.
 
     Examples
     --------
     >>> import robotconf as rc
-    >>> from robotconf.scene import RecordingChannel, Scene
+    >>> from robotconf.scene import RecordingChannel
     >>> arm = rc.preset("planar_2r", l1=1, l2=1)
-    >>> scene = Scene(arm, channel=RecordingChannel())
-    >>> scene.show_ghosts(arm, [[0.0, np.pi / 2], [np.pi / 2, -np.pi / 2]])
-    >>> scene.ghost_count
-    2
-    >>> scene.show_target([1.0, 1.0, 0.0], reachable=True)
-    >>> scene.target_shown
-    True
-    >>> scene.clear_ghosts(); scene.clear_target()
-    >>> scene.ghost_count, scene.target_shown
-    (0, False)
+    >>> ghosts = GhostsLayer(Outbox(RecordingChannel()), lambda: 2.0)
+    >>> ghosts.show(arm, [[0.0, np.pi / 2], [np.pi / 2, -np.pi / 2]])
+    >>> ghosts.count, ghosts.extent().shape
+    (2, (6, 3))
+    >>> ghosts.clear(); ghosts.count
+    0
     """
 
-    _log: SceneLog
+    def __init__(self, outbox: Outbox, size: Callable[[], float]) -> None:
+        self._outbox = outbox
+        self._size = size
+        # The drawing the ghost objects were built from, how many slots exist, how many
+        # show, and where their joints and end effectors stand (for the fit).
+        self._drawing: RobotDrawing | None = None
+        self._slots = 0
+        self.count = 0
+        self._points = np.zeros((0, 3))
 
-    if TYPE_CHECKING:  # provided by the scene
-
-        def _send(
-            self, ops: list[Op], *, log: bool = True, logged: list[Op] | None = None
-        ) -> None: ...
-
-        def _require_drawing(self) -> RobotDrawing: ...
-
-    # Ghost state: the drawing the ghost objects were built from, how many slots exist,
-    # how many show. Target state: what its objects look like (colour, pose, size).
-    _ghost_drawing: RobotDrawing | None = None
-    _ghost_slots: int = 0
-    _ghost_count: int = 0
-    _target_look: tuple[bool, bool, float] | None = None
-
-    @property
-    def ghost_count(self) -> int:
-        """How many ghost robots the pane shows."""
-        return self._ghost_count
-
-    @property
-    def target_shown(self) -> bool:
-        """Whether the target marker is drawn."""
-        return self._target_look is not None
-
-    def show_ghosts(self, robot: Robot, qs: Any) -> None:
+    def show(self, robot: Robot, qs: Any) -> None:
         """Draw faint copies of ``robot`` at each row of ``qs`` (replacing earlier ones).
 
         Parameters
@@ -174,7 +115,7 @@ class Ghosts:
         if not isinstance(robot, Robot):
             raise InvalidInputError("robot", one_line(robot), "a robotconf Robot")
         if np.size(qs) == 0:
-            self.clear_ghosts()
+            self.clear()
             return
         rows, batched = check_joint_values(qs, robot.n, robot.coordinate_names, "qs")
         if not batched:
@@ -188,100 +129,62 @@ class Ghosts:
             raise InvalidInputError(
                 "qs", f"<{len(rows)} rows>", f"at most {MAX_GHOSTS} ghosts", problem="too many:"
             )
-        size = self._require_drawing().size
-        drawing = self._ghost_drawing
+        size = self._size()
+        drawing = self._drawing
         ops: list[Op] = []
         if (
             drawing is None
-            or drawing.structure != structure_key(robot)
+            or drawing.structure != structure_of(robot.at())
             or drawing.size != size
-            or len(rows) > self._ghost_slots
+            or len(rows) > self._slots
         ):
-            self.clear_ghosts()
+            self.clear()
             drawing = RobotDrawing(robot, size)
-            self._ghost_drawing, self._ghost_slots = drawing, len(rows)
-            ops += self._ghost_objects(drawing, len(rows))
+            self._drawing, self._slots = drawing, len(rows)
+            ops += _ghost_objects(drawing, len(rows))
         else:
             drawing.robot = robot  # the same shapes; lengths may differ
-        ops += self._ghost_poses(drawing, rows)
-        for slot in range(self._ghost_slots):
+        ops += self._poses(drawing, rows)
+        for slot in range(self._slots):
             ops.append(
                 Op({"op": "visible", "paths": [f"{GHOSTS}/{slot}"], "value": slot < len(rows)})
             )
-        self._ghost_count = len(rows)
-        self._send(ops)
+        self.count = len(rows)
+        self._outbox.send(ops)
 
-    def clear_ghosts(self) -> None:
+    def clear(self) -> None:
         """Remove every ghost robot (from live views and from what a reload shows)."""
-        if self._ghost_drawing is None:
+        if self._drawing is None:
             return
-        self._log.forget(GHOSTS)
-        self._send([command_op({"type": "delete", "path": GHOSTS})], log=False)
-        self._ghost_drawing, self._ghost_slots, self._ghost_count = None, 0, 0
+        self._outbox.delete(GHOSTS)
+        self._drawing, self._slots, self.count = None, 0, 0
+        self._points = np.zeros((0, 3))
 
-    def show_target(self, target: Any, reachable: bool = True) -> None:
-        """Mark a target: a sphere at its point, and an RGB triad (x red, y green, z blue)
-        for a pose; violet when ``reachable``, orange-red otherwise.
+    def extent(self) -> np.ndarray:
+        """Where the shown ghosts' joints and end effectors stand, shape (k, 3)."""
+        return self._points
 
-        Parameters
-        ----------
-        target : array-like, shape (3,) or (4, 4)
-            A point or a homogeneous pose in the base frame (length units).
-        reachable : bool
-            Whether the robot can reach it (only the colour changes).
-
-        Raises
-        ------
-        InvalidInputError
-            ``target`` of the wrong shape, not finite, or a pose whose last row is not
-            [0, 0, 0, 1]; ``reachable`` that is not a boolean.
-        """
-        is_pose = np.shape(target) == (4, 4)
-        pose = _check_target(target)
-        reachable = check_flag(reachable, "reachable")
-        size = self._require_drawing().size
-        look = (reachable, is_pose, size)
-        old, ops = self._target_look, []
-        if old is None or old[0] != reachable or old[2] != size:
-            sphere = shape_object("sphere", TARGET_RADIUS * size, TARGET_COLORS[reachable])
-            ops.append(set_object_op(f"{TARGET}/sphere", _faint(sphere, TARGET_OPACITY)))
-        if is_pose and (old is None or not old[1] or old[2] != size):
-            ops.append(set_object_op(f"{TARGET}/frame", triad(2 * TRIAD_LENGTH * size)))
-        if not is_pose and old is not None and old[1]:
-            self._log.forget(f"{TARGET}/frame")
-            self._send([command_op({"type": "delete", "path": f"{TARGET}/frame"})], log=False)
-        matrix = pose.T.ravel().tolist()  # meshcat reads column-major
-        ops.append(command_op({"type": "set_transform", "path": TARGET, "matrix": matrix}))
-        self._target_look = look
-        self._send(ops)
-
-    def clear_target(self) -> None:
-        """Remove the target marker."""
-        if self._target_look is None:
-            return
-        self._log.forget(TARGET)
-        self._send([command_op({"type": "delete", "path": TARGET})], log=False)
-        self._target_look = None
-
-    # -- building blocks -------------------------------------------------------------------
-
-    def _ghost_objects(self, drawing: RobotDrawing, slots: int) -> list[Op]:
-        # The body only: no frames' triads, no labels (their numbers would be the ghost's).
-        items = [i for i in drawing.items if i.layer == "body" and i.shape != "triad"]
-        return [
-            set_object_op(
-                f"{GHOSTS}/{slot}/{item.path}", ghost_object(item.shape, item.size, item.color)
-            )
-            for slot in range(slots)
-            for item in items
-        ]
-
-    def _ghost_poses(self, drawing: RobotDrawing, rows: np.ndarray) -> list[Op]:
+    def _poses(self, drawing: RobotDrawing, rows: np.ndarray) -> list[Op]:
         keep = [k for k, i in enumerate(drawing.items) if i.layer == "body" and i.shape != "triad"]
-        matrices = drawing.placements(rows).matrices()[:, keep]  # (k, items, 4, 4)
+        placement = drawing.placements(rows)
+        matrices = placement.matrices()[:, keep]  # (k, items, 4, 4)
+        spheres = [k for k, i in enumerate(drawing.items) if i.shape == "sphere"]
+        self._points = placement.position[:, spheres].reshape(-1, 3)
         names = [drawing.items[k].path for k in keep]
         # One op per ghost: its log entry stays the same whatever the number shown.
         return [
             transforms_op([f"{GHOSTS}/{slot}/{name}" for name in names], matrices[slot])
             for slot in range(len(rows))
         ]
+
+
+def _ghost_objects(drawing: RobotDrawing, slots: int) -> list[Op]:
+    # The body only: no frames' triads, no labels (their numbers would be the ghost's).
+    items = [i for i in drawing.items if i.layer == "body" and i.shape != "triad"]
+    return [
+        set_object_op(
+            f"{GHOSTS}/{slot}/{item.path}", ghost_object(item.shape, item.size, item.color)
+        )
+        for slot in range(slots)
+        for item in items
+    ]

@@ -1,12 +1,12 @@
-"""What the position labels say and where they stand: precision and decluttering.
+"""What the position labels say: precision and merged labels.
 
 A label's precision follows the robot's size: three significant digits of its
 characteristic length, so the paper robot (90 units of links) prints ``70.0`` and a UR5
-(1.19 m) prints ``0.82``, never a bare ``0.8``. Points that coincide at the shown precision (PUMA's
-three wrist frames, a SCARA's stacked frames) share one label, ``M4, M5, M6 (…)``; labels
-of points close together are stacked in rows above their points instead of drawn on top
-of each other (the viewer offsets row ``k`` by ``k`` label heights on screen, and lifts a
-label further while its box overlaps another one).
+(1.19 m) prints ``0.82``, never a bare ``0.8``. Points that coincide at the shown precision
+(PUMA's three wrist frames, a SCARA's stacked frames) share one label, ``M4, M5, M6 (…)``.
+Where a label stands is the page's business (``js/labels.js``): it knows the camera, so it
+keeps labels of nearby points apart on screen, wraps long ones inside the pane, and draws a
+leader line from a label to its point whenever it had to move the label away from it.
 """
 
 from __future__ import annotations
@@ -17,7 +17,7 @@ import numpy as np
 
 from .._errors import InvalidInputError
 
-__all__ = ["LABEL_MODES", "label_digits", "label_rows", "merge_coincident", "check_label_mode"]
+__all__ = ["LABEL_MODES", "label_digits", "merge_coincident", "check_label_mode"]
 
 #: What the labels show: nothing, the point names, or names with positions.
 LABEL_MODES = ("off", "names", "positions")
@@ -36,41 +36,19 @@ def label_digits(length: float) -> int:
     return int(min(max(2 - math.floor(math.log10(length)), 0), 15))
 
 
-def label_rows(points: np.ndarray, spacing: float, skip: list[bool] | None = None) -> list[int]:
-    """Stack rows for labels at ``points`` (m, 3): closer than ``spacing`` means stacked.
-
-    Labels flagged in ``skip`` (empty ones) take row 0 and no room.
-
-    Each label takes the lowest row that no earlier label within ``spacing`` holds, so
-    distant labels stay on row 0 and a pile of coincident points becomes a column.
-
-    Examples
-    --------
-    >>> label_rows(np.array([[0, 0, 0], [0, 0, 0.1], [5, 0, 0], [0, 0, 0]]), 1.0)
-    [0, 1, 0, 2]
-    """
-    xyz = np.asarray(points, dtype=float)
-    near = np.linalg.norm(xyz[:, None, :] - xyz[None, :, :], axis=-1) < spacing
-    rows: list[int] = []
-    for i in range(len(xyz)):
-        if skip is not None and skip[i]:
-            rows.append(0)
-            continue
-        taken = {rows[j] for j in range(i) if near[i, j] and not (skip is not None and skip[j])}
-        row = 0
-        while row in taken:
-            row += 1
-        rows.append(row)
-    return rows
-
-
 def merge_coincident(
-    names: list[str], points: np.ndarray, digits: int, positions: bool
+    names: list[str],
+    points: np.ndarray,
+    digits: int,
+    positions: bool,
+    known: dict[tuple[str, tuple[float, ...]], str] | None = None,
 ) -> list[str]:
     """One label per group of points equal at ``digits`` decimals; the others empty.
 
     The group's first label names every point of it, ``"M4, M5, M6 (0.45, -0.15, 0.43)"``
-    (or ``"M4, M5, M6"`` without ``positions``); an empty text draws nothing.
+    (or ``"M4, M5, M6"`` without ``positions``); an empty text draws nothing. ``known``
+    keeps texts already written (by name and rounded position, for one ``digits``): a
+    slider step on the last joint writes only the labels of the points that moved.
 
     Examples
     --------
@@ -80,15 +58,27 @@ def merge_coincident(
     """
     from ..kinematics import format_point
 
-    keys = [tuple(round(float(v), digits) + 0.0 for v in p) for p in points]
+    rows = np.asarray(points, dtype=float).tolist()
+    # The rounding format_point shows: equal keys print equal numbers.
+    keys = [tuple(round(v, digits) + 0.0 for v in row) for row in rows]
     groups: dict[tuple[float, ...], list[int]] = {}
     for k, key in enumerate(keys):
         groups.setdefault(key, []).append(k)
     texts = [""] * len(names)
-    for members in groups.values():
+    for key, members in groups.items():
         name = ", ".join(names[k] for k in members)
         first = members[0]
-        texts[first] = format_point(name, points[first], digits) if positions else name
+        if not positions:
+            texts[first] = name
+        elif known is None:
+            texts[first] = format_point(name, rows[first], digits)
+        else:
+            text = known.get((name, key))
+            if text is None:
+                if len(known) > 4096:  # a long drag: forget the oldest ones
+                    known.clear()
+                text = known[(name, key)] = format_point(name, rows[first], digits)
+            texts[first] = text
     return texts
 
 

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["Placement", "align_y", "compose", "quaternions", "segment_placement"]
+__all__ = ["Placement", "align_y", "compose", "quaternions"]
 
 
 class Placement:
@@ -72,31 +72,6 @@ def align_y(direction: np.ndarray) -> np.ndarray:
     # R(d) = R(−d) · Rx(π): Rx(π) turns y onto −y, R(−d) turns −y onto d.
     out[..., :, 1:] = np.where(lower[..., None, None], -out[..., :, 1:], out[..., :, 1:])
     return out
-
-
-def segment_placement(start: np.ndarray, end: np.ndarray, tiny: float) -> Placement:
-    """Place a unit cylinder or box (length 1 along y) from ``start`` to ``end``.
-
-    Parameters
-    ----------
-    start, end : ndarray, shape (..., 3)
-    tiny : float
-        Length under which the segment is drawn as nothing (scaled to ``tiny`` along all
-        axes, so no NaN and nothing visible).
-
-    Examples
-    --------
-    >>> p = segment_placement(np.zeros(3), np.array([0.0, 0.0, 2.0]), 1e-9)
-    >>> p.position, p.scale
-    (array([0., 0., 1.]), array([1., 2., 1.]))
-    """
-    vector = end - start
-    length = np.linalg.norm(vector, axis=-1)
-    rotation = align_y(vector)
-    visible = length > tiny
-    scale = np.stack([np.ones_like(length), length, np.ones_like(length)], axis=-1)
-    scale = np.where(visible[..., None], scale, tiny)
-    return Placement((start + end) / 2.0, rotation, scale)
 
 
 def compose(position: np.ndarray, rotation: np.ndarray, scale: np.ndarray) -> np.ndarray:

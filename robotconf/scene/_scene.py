@@ -1,59 +1,46 @@
 """The robot in a 3D pane: Figure 14 of the paper, live in the notebook.
 
-:class:`Scene` turns a robot into meshcat objects once and, when ``q`` changes, sends only
+:class:`Scene` draws a :class:`~robotconf.kinematics.RobotSnapshot` (``robot.at(q)``, one
+kernel pass): it builds the robot's objects once and, for each new snapshot, sends only
 the transforms and label texts that changed. Every position it shows comes from the core,
 so ``robot.end_effector(q)`` in a cell gives the number on the red sphere's label.
+
+The scene is a hub of small parts, each given only the scene's :class:`Outbox` (and the
+drawing's size where it needs it): the robot (``_robot_layer.py``), ghost robots
+(``_ghosts.py``), the target marker (``_target.py``), a program's taught points
+(``_taught_points.py``) and the animation's playback (``_playback.py``). The bar above the
+pane and the animation's clock live in the page (``js/``); the page sends back the
+student's requests and playback reports (``_page.py``).
 """
 
 from __future__ import annotations
 
+from collections.abc import Callable
 from pathlib import Path
-from time import monotonic
 from typing import Any
 
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import check_configuration, check_flag, check_integer
-from ..kinematics import Robot, characteristic_length
-from ._animation import AnimationState
-from ._commands import (
-    ROOT,
-    Op,
-    SceneLog,
-    animation_op,
-    command_op,
-    fit_op,
-    labels_op,
-    set_object_op,
-    shape_object,
-    transforms_op,
-)
-from ._drawing import RobotDrawing, robot_size, structure_key
-from ._fit import view_sphere
-from ._ghosts import Ghosts
-from ._labels import check_label_mode, label_digits, label_rows, merge_coincident
-from ._playback import _ANIMATION_KEYS, ROBOT, Playback
-from ._shown import Shown
-from ._taught_points import TaughtPoints
+from .._validation import check_flag, check_integer, one_line
+from ..kinematics import Robot, RobotSnapshot
+from ._commands import Op, Outbox, fit_op, options_op
+from ._drawing import SPHERE_RADIUS, RobotDrawing
+from ._fit import CENTRED, camera_op, inside, view_sphere
+from ._ghosts import GhostsLayer
+from ._labels import check_label_mode
+from ._page import route_message
+from ._playback import Playback, PlaybackState
+from ._points import PointClouds
+from ._robot_layer import RobotLayer, transform_command
+from ._target import TargetMarker
+from ._taught_points import TaughtPointsLayer
 
-__all__ = ["Scene", "view"]
-
-#: Centring moves everything meshcat draws for us, and its grid and world axes with it.
-CENTRED = ("/meshcat", "/Grid", "/Axes")
-
-#: Rebuild the objects when the robot's size changes by more than this factor.
-RESIZE_FACTOR = 2.0
-#: Labels of points closer than this (times the view radius) are stacked in rows.
-LABEL_SPACING = 0.25
+__all__ = ["Scene"]
 
 
-class Scene(Ghosts, Playback, TaughtPoints):
+class Scene:
     """A robot drawn in meshcat's three.js viewer inside the notebook.
-
-    Inverse kinematics draws beside it: :meth:`show_ghosts` (faint copies at other
-    coordinates) and :meth:`show_target` (a target marker), see ``_ghosts.py``; a robot
-    program's taught points with :meth:`show_taught_points` (``_taught_points.py``).
 
     Parameters
     ----------
@@ -61,19 +48,33 @@ class Scene(Ghosts, Playback, TaughtPoints):
     q : array-like, shape (n,), optional
         Initial coordinates; default: the modules' own ``q``.
     height : int
-        Pane height in pixels.
+        Pane height in pixels (the bar sits above it).
     labels : {"positions", "names", "off"} or bool
         What the labels show: ``EE (70.0, 0.0, 20.0)``, ``EE``, or nothing (``True`` is
         ``"positions"``, ``False`` is ``"off"``).
     frames : bool
         Show an RGB triad (x red, y green, z blue) at every module frame.
     controls : bool
-        Put the control bar above the pane (animation, fit view, labels, frames, trace).
+        Draw the bar above the pane (play, speed, time, fit, labels, frames, trace).
     channel : object, optional
         Where ops go: default a notebook widget; tests pass a
-        :class:`~robotconf.scene.RecordingChannel`.
+        :class:`~robotconf.scene.RecordingChannel` (and play the page with
+        :meth:`receive_from_page`).
     max_rate : float or None
         Messages per second to the notebook at most (default 60).
+
+    Attributes
+    ----------
+    on_request : callable or None
+        Called with the student's requests from the bar (a dict, see
+        :mod:`robotconf.scene._page`) instead of applying view options here: a panel turns
+        them into its own actions and calls :meth:`set_label_mode`, :meth:`show_frames`,
+        :meth:`show_trace` or :meth:`fit_view` back. Playback the student started in the
+        bar is reported too (``"play"``, ``"pause"``, ``"seek"`` with ``"time"``,
+        ``"speed"`` with ``"value"``), after the page has done it.
+    on_playback : callable or None
+        Called with the new :class:`PlaybackState` whenever the page reports a change
+        (play, pause, seek, speed, end); never for the kernel's own commands.
 
     Examples
     --------
@@ -86,7 +87,7 @@ class Scene(Ghosts, Playback, TaughtPoints):
     >>> scene = Scene(robot, channel=RecordingChannel())
     >>> scene.labels()[-1]
     'EE (70.0, 0.0, 20.0)'
-    >>> scene.update([0, 0.5, 0])
+    >>> scene.show(robot.at([0, 0.5, 0]))
     >>> scene.channel.kinds()[-2:]
     ['transforms', 'labels']
     """
@@ -104,388 +105,395 @@ class Scene(Ghosts, Playback, TaughtPoints):
         max_rate: float | None = 60.0,
     ) -> None:
         _check_robot(robot)
-        height = check_integer(height, "height", 100, 4000, "an integer from 100 to 4000 (pixels)")
-        self._label_mode = check_label_mode(labels)
-        self._frames_on = check_flag(frames, "frames")
+        self.height = check_integer(
+            height, "height", 100, 4000, "an integer from 100 to 4000 (pixels)"
+        )
+        label_mode = check_label_mode(labels)
+        frames = check_flag(frames, "frames")
         self._controls_on = check_flag(controls, "controls")
-        self._trace_on = False
-        self.height = height
-        self._log = SceneLog()
-        self._shown = Shown()
-        self._pane = None
-        self._widget: Any = None
-        self._controls: Any = None
-        self._animation: AnimationState | None = None
-        self._view_radius = 1.0
-        self._digits = 1
+        self.on_request: Callable[[dict[str, Any]], Any] | None = None
+        self.on_playback: Callable[[PlaybackState], Any] | None = None
+        self._pane: Any = None
+        self._shown_in_cell: int | None = None
         if channel is None:
             from ._widget import SceneWidget, WidgetChannel, shared_code
 
-            self._pane = SceneWidget(height=height, code=shared_code())
+            self._pane = SceneWidget(height=self.height, code=shared_code())
             channel = WidgetChannel(self._pane, self._replay, max_rate=max_rate)
-            channel.on_event = self._view_event
+            channel.on_event = self.receive_from_page
         self.channel = channel
-        self._drawing: RobotDrawing | None = None
-        self._shown_in_cell: int | None = None
-        self.robot = robot
-        self.q = robot.q
-        self._send(self._setup_ops())
-        self.set_robot(robot, q)
+        self._outbox = Outbox(channel)
+        self._robot = RobotLayer(self._outbox, label_mode, frames)
+        self._ghosts = GhostsLayer(self._outbox, self._size)
+        self._target = TargetMarker(self._outbox, self._size)
+        self._taught = TaughtPointsLayer(self._outbox, self._size, lambda: self._robot.digits)
+        self._playback = Playback(self._outbox)
+        self._clouds = PointClouds(self._outbox)
+        self._fitted = (np.zeros(3), 0.0)  # the sphere the view was last fitted to
+        self._outbox.send([camera_op(), self._options_op()])
+        self.show(robot.at(q))
 
-    # -- what users call -------------------------------------------------------------------
-
-    @property
-    def widget(self) -> Any:
-        """The widget to place in a layout: the control bar above the pane (``None`` with a
-        custom channel)."""
-        if self._widget is None and self._pane is not None:
-            if self._controls_on:
-                import ipywidgets
-
-                self._widget = ipywidgets.VBox([self.controls.widget, self._pane])
-            else:
-                self._widget = self._pane
-        return self._widget
+    # -- the robot --------------------------------------------------------------------------
 
     @property
-    def pane(self) -> Any:
-        """The 3D pane alone (an anywidget), or ``None`` with a custom channel."""
-        return self._pane
+    def snapshot(self) -> RobotSnapshot:
+        """The snapshot shown (the robot at :attr:`q`)."""
+        snapshot = self._robot.snapshot
+        assert snapshot is not None
+        return snapshot
 
     @property
-    def controls(self) -> Any:
-        """The scene's control bar (:class:`~robotconf.scene.SceneControls`), made on use."""
-        if self._controls is None:
-            from ._controls import SceneControls
-
-            self._controls = SceneControls(self)
-        return self._controls
+    def robot(self) -> Robot:
+        """The robot shown."""
+        return self.snapshot.robot
 
     @property
-    def label_mode(self) -> str:
-        """What the labels show: ``"off"``, ``"names"`` or ``"positions"``."""
-        return self._label_mode
+    def q(self) -> np.ndarray:
+        """The coordinates shown, shape (n,)."""
+        return self.snapshot.q
 
-    @property
-    def frames_shown(self) -> bool:
-        """Whether the module frames' triads are shown."""
-        return self._frames_on
+    def show(self, snapshot: RobotSnapshot) -> None:
+        """Draw ``snapshot.robot`` at ``snapshot.q`` from the snapshot's own numbers.
+
+        Objects are rebuilt only when the robot's structure changes (or its size by more
+        than a factor of 2; the view is then fitted again); otherwise one message carries
+        the transforms and label texts that changed. A loaded animation is dropped first:
+        the pane shows the snapshot, now and after a page reload.
+
+        Parameters
+        ----------
+        snapshot : RobotSnapshot
+            From :meth:`Robot.at <robotconf.Robot.at>`.
+        """
+        if not isinstance(snapshot, RobotSnapshot):
+            raise InvalidInputError(
+                "snapshot", one_line(snapshot), "a RobotSnapshot from robot.at(q)"
+            )
+        if self._playback.loaded:
+            self._outbox.send_live(self._playback.drop())
+            self._robot.set_moving(False)
+        if self._robot.show(snapshot):
+            self._playback.forget()  # its targets went with the old objects
+            self.fit_view()
 
     def set_robot(self, robot: Robot, q: Any = None) -> None:
-        """Show another robot; objects are rebuilt only if its structure changed.
-
-        Parameters
-        ----------
-        robot : Robot
-        q : array-like, shape (n,), optional
-            Default: the robot's own ``q``.
-        """
+        """Show another robot: ``show(robot.at(q))`` (``q`` default: the robot's own)."""
         _check_robot(robot)
-        values = self._values(robot, q)
-        size = robot_size(robot, values)
-        drawing = self._drawing
-        self.robot = robot
-        self._digits = label_digits(characteristic_length(robot))
-        if (
-            drawing is None
-            or drawing.structure != structure_key(robot)
-            or not 1 / RESIZE_FACTOR <= size / drawing.size <= RESIZE_FACTOR
-        ):
-            self._build(RobotDrawing(robot, size), values)
-        else:
-            drawing.robot = robot
-        self.update(values)
+        self.show(robot.at(q))
 
     def update(self, q: Any) -> None:
-        """Move the robot to ``q`` (n,): one message with what changed.
-
-        An animation loaded before is dropped: the pane shows ``q``, now and after a
-        page reload.
-
-        Parameters
-        ----------
-        q : array-like, shape (n,)
-            Radians for rotations, length units for translations.
+        """Move the shown robot to ``q`` (n,): ``show(scene.robot.at(q))``.
 
         Raises
         ------
         InvalidInputError
             For a bad ``q``, or a trajectory of shape (T, n): :meth:`animate` plays a motion.
         """
-        drawing = self._require_drawing()
-        values = self._values(self.robot, q)
-        ops: list[Op] = []
-        if self._animation is not None:
-            ops += self._drop_animation()
-        self.q = values
-        paths = [self._path(p) for p in drawing.paths]
-        matrices = drawing.placements(values).matrices()
-        changed, moved = self._shown.transforms(paths, matrices)
-        live = [transforms_op(changed, moved)] if changed else []
-        logged = [transforms_op(paths, matrices)]
-        label_live, label_logged = self._label_ops()
-        self._send(ops + live + label_live, logged=logged + label_logged)
+        self.show(self.robot.at(q))
 
     def labels(self) -> list[str]:
-        """The position labels at the current ``q``: ``["M1 (…)", …, "EE (…)"]``."""
-        return self._require_drawing().labels(self.q, self._digits)
+        """The position labels of the robot shown: ``["M1 (…)", …, "EE (…)"]``."""
+        return self._robot.labels()
 
-    def show_frames(self, visible: bool = True) -> None:
-        """Show or hide the RGB triads at the module frames (x red, y green, z blue)."""
-        self._frames_on = check_flag(visible, "visible")
-        self._send([self._visibility_op("frames", self._frames_on)])
-        self._sync_controls()
+    # -- view options -----------------------------------------------------------------------
+
+    @property
+    def label_mode(self) -> str:
+        """What the labels show: ``"off"``, ``"names"`` or ``"positions"``."""
+        return self._robot.label_mode
+
+    @property
+    def frames_shown(self) -> bool:
+        """Whether the module frames' triads are shown."""
+        return self._robot.frames
+
+    @property
+    def trace_shown(self) -> bool:
+        """Whether the end-effector's path is drawn during an animation."""
+        return self._playback.trace
+
+    def set_label_mode(self, mode: str) -> None:
+        """What the labels show: ``"off"``, ``"names"`` or ``"positions"`` (the taught
+        points' labels hide with ``"off"`` too)."""
+        mode = check_label_mode(mode)
+        self._robot.set_label_mode(mode)
+        self._taught.set_labels_visible(mode != "off")
+        self._outbox.send([self._options_op()])
 
     def show_labels(self, visible: bool = True) -> None:
         """Show the position labels, or hide every label (see :meth:`set_label_mode`)."""
         self.set_label_mode("positions" if check_flag(visible, "visible") else "off")
 
-    def set_label_mode(self, mode: str) -> None:
-        """What the labels show: ``"off"``, ``"names"`` or ``"positions"``."""
-        self._label_mode = check_label_mode(mode)
-        live, logged = self._label_ops()
-        visibility = self._visibility_op("labels", self._label_mode != "off")
-        self._send([visibility, *live], logged=[visibility, *logged])
-        self._sync_controls()
+    def show_frames(self, visible: bool = True) -> None:
+        """Show or hide the RGB triads at the module frames (x red, y green, z blue)."""
+        self._robot.set_frames(check_flag(visible, "visible"))
+        self._outbox.send([self._options_op()])
+
+    def show_trace(self, visible: bool = True) -> None:
+        """Draw the end-effector's path (a line through the motion's EE positions) while
+        an animation is loaded."""
+        self._playback.show_trace(check_flag(visible, "visible"))
+        self._outbox.send([self._options_op()])
 
     def fit_view(self) -> None:
-        """Centre the robot at its current ``q`` and zoom until it fills the pane.
+        """Centre everything drawn and zoom until it fills the pane.
 
-        The camera keeps its direction; the scene's centre moves to the middle of the
-        sphere around everything drawn (:func:`~robotconf.scene._fit.view_sphere`).
+        The sphere holds the robot at its current ``q`` (base, frames, joint axes, end
+        effector), the ghosts, the target marker, the taught points, the point clouds and
+        where a loaded animation takes the robot.
+        The camera keeps its direction; the scene's centre moves to the sphere's centre.
         """
-        drawing = self._require_drawing()
-        centre, radius = view_sphere(drawing, self.q)
-        self._view_radius = radius
+        drawing = self._drawing()
+        centre, radius = view_sphere(self._extents(), 1.2 * SPHERE_RADIUS * drawing.size)
+        self._fitted = (centre, radius)
         shift = np.eye(4)
         shift[:3, 3] = -centre / drawing.size
-        ops = [_transform_command(path, shift) for path in CENTRED]
+        ops = [transform_command(path, shift) for path in CENTRED]
         ops.append(fit_op(radius / drawing.size))
-        self._send(ops)
+        self._outbox.send(ops)
+
+    # -- playback ---------------------------------------------------------------------------
+
+    @property
+    def playback_state(self) -> PlaybackState:
+        """Where the animation is: loaded, playing, time (estimated while playing), speed,
+        duration."""
+        return self._playback.state()
+
+    def animate(self, motion: Any, *, speed: float = 1.0, play: bool = True) -> None:
+        """Play a simulated motion in the pane; the page plays it to its end by itself.
+
+        Labels show names only while the animation is loaded: the page replays
+        transforms, and a number that does not follow the robot would be wrong. The view
+        stays (the student chose it); **fit** then takes in the whole motion.
+        :meth:`show` (or ``update``) drops the animation and brings the numbers back.
+
+        Parameters
+        ----------
+        motion : Motion
+            From :func:`robotconf.simulate` with this scene's robot.
+        speed : float
+            Playback speed (1 = real time).
+        play : bool
+            Start playing at once (else the bar's ▶ starts it).
+        """
+        self._playback.load(self._drawing(), motion, speed=speed, play=play)
+        self._robot.set_moving(True)
+        self._outbox.send([self._options_op()])
+
+    def play(self) -> None:
+        """Play the loaded animation (from the start once it has ended)."""
+        self._playback.play()
+
+    def pause(self) -> None:
+        """Pause the loaded animation where it is."""
+        self._playback.pause()
+
+    def seek(self, t: float) -> None:
+        """Show the loaded animation at motion time ``t`` (s), paused."""
+        self._playback.seek(t)
+
+    def set_speed(self, speed: float) -> None:
+        """Playback speed of the animation: 1 is real time, 2 twice as fast."""
+        self._playback.set_speed(speed)
+
+    # -- beside the robot -------------------------------------------------------------------
+
+    @property
+    def ghost_count(self) -> int:
+        """How many ghost robots the pane shows."""
+        return self._ghosts.count
+
+    @property
+    def target_shown(self) -> bool:
+        """Whether the target marker is drawn."""
+        return self._target.shown
+
+    @property
+    def taught_labels(self) -> list[str]:
+        """The label of every taught point shown (``""`` where merged into another's)."""
+        return self._taught.labels
+
+    def show_ghosts(self, robot: Robot, qs: Any) -> None:
+        """Draw faint copies of ``robot`` at each row of ``qs`` (k, n), replacing earlier
+        ones (:meth:`GhostsLayer.show <robotconf.scene._ghosts.GhostsLayer.show>`); the
+        view widens if one would be outside it."""
+        self._ghosts.show(robot, qs)
+        self._keep_in_view(self._ghosts.extent())
+
+    def clear_ghosts(self) -> None:
+        """Remove every ghost robot."""
+        self._ghosts.clear()
+
+    def show_target(self, point_or_pose: Any, reachable: bool = True) -> None:
+        """Mark a target point (3,) or pose (4, 4): violet when ``reachable``, orange-red
+        otherwise (:class:`~robotconf.scene._target.TargetMarker`); a target outside the
+        view is brought into it."""
+        self._target.show(point_or_pose, reachable)
+        self._keep_in_view(self._target.extent())
+
+    def clear_target(self) -> None:
+        """Remove the target marker."""
+        self._target.clear()
+
+    def show_taught_points(
+        self, points: Any, labels: Any = None, via: Any = None, via_labels: Any = None
+    ) -> None:
+        """Mark a program's taught points (k, 3) and CIRC via points (m, 3), labelled
+        ``P1 …`` and ``via 1 …`` unless given
+        (:meth:`TaughtPointsLayer.show <robotconf.scene._taught_points.TaughtPointsLayer.show>`);
+        every marker is kept in view."""
+        self._taught.show(points, labels, via=via, via_labels=via_labels)
+        self._keep_in_view(self._taught.extent())
+
+    def clear_taught_points(self) -> None:
+        """Remove the taught points' markers."""
+        self._taught.clear()
 
     def add_point_cloud(
         self, name: str, points: Any, color: Any = (0.2, 0.4, 0.9), size: float | None = None
     ) -> None:
-        """Draw points (e.g. a workspace) in the robot's frame.
+        """Draw points (N, 3) in the base frame, e.g. a workspace, as cloud ``name``
+        (replacing one of that name); RGB ``color`` (3,) or (N, 3) in 0…1, point ``size``
+        in length units (default 1 % of the robot's size). The view widens to hold them."""
+        self._clouds.add(name, points, color, size or 0.01 * self._size())
+        self._keep_in_view(self._clouds.extent())
 
-        Parameters
-        ----------
-        name : str
-            Replaces an earlier cloud of the same name.
-        points : array-like, shape (N, 3)
-            Base-frame positions (length units).
-        color : array-like, shape (3,) or (N, 3)
-            RGB in 0…1.
-        size : float, optional
-            Point size in length units; default 1 % of the robot's size.
+    # -- the page ---------------------------------------------------------------------------
+
+    @property
+    def widget(self) -> Any:
+        """The widget to place in a layout: the bar and the pane (``None`` with a custom
+        channel)."""
+        return self._pane
+
+    @property
+    def pane(self) -> Any:
+        """The scene's widget (an anywidget), or ``None`` with a custom channel."""
+        return self._pane
+
+    def receive_from_page(self, message: Any) -> None:
+        """Take a message a view sent (the bar's requests, the player's reports).
+
+        The formats are in :mod:`robotconf.scene._page`; malformed messages are ignored.
+        A request goes to :attr:`on_request` when set, else the scene applies it; a
+        player report updates :attr:`playback_state` and goes to :attr:`on_playback`.
+
+        Examples
+        --------
+        >>> import robotconf as rc
+        >>> from robotconf.scene import RecordingChannel, Scene
+        >>> scene = Scene(rc.preset("paper"), channel=RecordingChannel())
+        >>> names = {"kind": "labels", "mode": "names"}
+        >>> scene.receive_from_page({"kind": "request", "request": names})
+        >>> scene.label_mode
+        'names'
         """
-        from ._points import point_cloud_op
-
-        drawing = self._require_drawing()
-        path = f"{ROOT}/clouds/{_clean_name(name)}"
-        op = point_cloud_op(path, points, color, size or 0.01 * drawing.size)
-        self._send([op])
+        route_message(message, self._playback, self._apply, self.on_request, self.on_playback)
 
     def export_html(self, path: str | Path) -> Path:
         """Write the scene as one self-contained HTML file that opens offline.
 
-        The viewer code is inlined (no CDN, no network); an animation keeps its controls.
+        The viewer code is inlined (no CDN, no network); the bar works in the file too:
+        an animation plays, pauses and scrubs, and labels, frames, trace and fit switch.
 
         Returns
         -------
         pathlib.Path
         """
-        from ._html import scene_html
+        from ._html import bar_choices, scene_html
 
+        choices = bar_choices(
+            self._robot, self._taught, self._playback, self._outbox.log, self._options_op
+        )
         target = Path(path)
-        target.write_text(scene_html(self._replay(), title=self.robot.name or "robot"), "utf-8")
+        title = self.robot.name or "robot"
+        ops = self._replay(from_start=True)
+        target.write_text(scene_html(ops, choices, title=title), "utf-8")
         return target
 
     def close(self) -> None:
         """Close the widget (its views release their WebGL contexts)."""
         self.channel.close()
-        if self._controls is not None:
-            self._controls.close()
-        if self._widget is not None and self._widget is not self._pane:
-            self._widget.close()
 
     def _ipython_display_(self) -> None:
         from IPython.display import display
 
+        from ._view import execution_count
+
         # `rc.view(robot)` as a cell's last line displays the pane, then IPython displays
         # the returned scene again: skip that second one (same cell), allow any later one.
-        if self._shown_in_cell is not None and self._shown_in_cell == _execution_count():
+        if self._shown_in_cell is not None and self._shown_in_cell == execution_count():
             self._shown_in_cell = None
             return
-        widget = self.widget
-        display(widget if widget is not None else repr(self))
+        display(self._pane if self._pane is not None else repr(self))
 
     def __repr__(self) -> str:
         return f"<Scene of {self.robot.n} modules at q={np.round(self.q, 4).tolist()}>"
 
-    # -- building blocks -------------------------------------------------------------------
+    # -- building blocks --------------------------------------------------------------------
 
-    def _build(self, drawing: RobotDrawing, values: np.ndarray) -> None:
-        # A fresh view has nothing to delete, so the delete itself is not logged.
-        self._log.forget(ROBOT)
-        ops = [command_op({"type": "delete", "path": ROBOT})]
-        if self._animation is not None:
-            ops.insert(0, animation_op("clear"))
-            for key in _ANIMATION_KEYS:
-                self._log.drop(key)
-            self._animation = None
-        self._send(ops, log=False)
-        self._drawing = drawing
-        self._shown.forget()
-        scale = 1.0 / drawing.size
-        ops = [_transform_command(ROOT, np.diag([scale, scale, scale, 1.0]))]
-        for item in drawing.items:
-            obj = shape_object(item.shape, item.size, item.color)
-            ops.append(set_object_op(self._path(item.path), obj))
-        ops.append(self._visibility_op("frames", self._frames_on))
-        ops.append(self._visibility_op("labels", self._label_mode != "off"))
-        self._send(ops)
-        self.q = values
-        self.fit_view()
-        self._sync_controls()
-
-    def _label_ops(self) -> tuple[list[Op], list[Op]]:
-        """The labels that changed (for live views) and all labels (for the log)."""
-        drawing = self._require_drawing()
-        if self._label_mode == "off":
-            return [], []
-        points = drawing.label_points(self.q)
-        names = list(drawing.point_names)
-        if self._animation is not None:
-            # The names themselves, one per moving point: the viewer replays transforms, so
-            # a number, or a merge of points that part during the motion, would be wrong.
-            texts = names
+    def _apply(self, request: dict[str, Any]) -> None:
+        """A request from the bar, applied here (no :attr:`on_request`)."""
+        kind = request["kind"]
+        if kind == "labels":
+            self.set_label_mode(request["mode"])
+        elif kind == "frames":
+            self.show_frames(request["value"])
+        elif kind == "trace":
+            self.show_trace(request["value"])
         else:
-            texts = merge_coincident(names, points, self._digits, self._label_mode == "positions")
-        rows = label_rows(points, LABEL_SPACING * self._view_radius, [not t for t in texts])
-        paths = [self._path(p) for p in drawing.label_paths]
-        changed = self._shown.labels(paths, texts, rows)
-        live = [labels_op(*changed)] if changed[0] else []
-        return live, [labels_op(paths, texts, rows)]
+            self.fit_view()
 
-    def _sync_controls(self) -> None:
-        if self._controls is not None:
-            self._controls.sync()
+    def _options_op(self, **changes: Any) -> Op:
+        options = {
+            "labels": self.label_mode,
+            "frames": self.frames_shown,
+            "trace": self.trace_shown,
+            "controls": self._controls_on,
+            **changes,
+        }
+        return options_op(**options)
 
-    def _replay(self) -> list[Op]:
-        """The log in replay order: the animation (paused) before the current transforms,
-        so a new view or a reloaded page shows the current ``q``."""
-        ops = self._log.ops()
-        animation = [op for op in ops if _log_key(op) in _ANIMATION_KEYS]
-        rest = [op for op in ops if _log_key(op) not in _ANIMATION_KEYS]
-        first_state = next(
-            (k for k, op in enumerate(rest) if op.content["op"] in ("transforms", "labels")),
-            len(rest),
-        )
-        ops = rest[:first_state] + animation + rest[first_state:]
-        state = self._animation
-        if state is not None and state.still_playing(monotonic()):
-            # A view that opens while the motion plays (the cell that made the scene and
-            # animated it) plays it too; once it has ended, views show the current q.
-            ops.append(animation_op("play"))
-        return ops
+    def _replay(self, *, from_start: bool = False) -> list[Op]:
+        """The log in replay order, then where the player stands: a new view or a
+        reloaded page shows what the others show (the animation's frame once one is
+        loaded, else the current snapshot); an exported file plays it ``from_start``."""
+        ops = self._outbox.log.ops()
+        animation = [op for op in ops if _is_animation(op)]
+        rest = [op for op in ops if not _is_animation(op)]
+        return rest + animation + self._playback.replay_ops(from_start=from_start)
 
-    def _setup_ops(self) -> list[Op]:
+    def _extents(self) -> list[np.ndarray]:
         return [
-            # Look at the robot from the front right, slightly above; fit_view sets the
-            # distance, keeping this direction.
-            command_op(
-                {
-                    "type": "set_property",
-                    "path": "/Cameras/default/rotated/<object>",
-                    "property": "position",
-                    "value": [0.9, 0.6, 0.9],
-                }
-            ),
+            self._robot.extent(),
+            self._ghosts.extent(),
+            self._target.extent(),
+            self._taught.extent(),
+            self._clouds.extent(),
+            self._playback.extent(),
         ]
 
-    def _visibility_op(self, layer: str, visible: bool) -> Op:
-        drawing = self._require_drawing()
-        paths = [self._path(item.path) for item in drawing.items if item.layer == layer]
-        return Op({"op": "visible", "paths": paths, "value": bool(visible)})
+    def _keep_in_view(self, points: np.ndarray) -> None:
+        centre, radius = self._fitted
+        if not inside(points, centre, radius):
+            self.fit_view()
 
-    def _path(self, item_path: str) -> str:
-        return f"{ROBOT}/{item_path}"
+    def _drawing(self) -> RobotDrawing:
+        drawing = self._robot.drawing
+        assert drawing is not None, "the scene has no robot yet"
+        return drawing
 
-    def _send(self, ops: list[Op], *, log: bool = True, logged: list[Op] | None = None) -> None:
-        """Send ``ops`` to the live views; record ``logged`` (default: the same ops) as the
-        state a new view replays."""
-        if log:
-            for op in ops if logged is None else logged:
-                self._log.record(_log_key(op), op)
-        if ops:
-            self.channel.send(ops)
+    def _size(self) -> float:
+        return self._drawing().size
 
-    def _values(self, robot: Robot, q: Any) -> np.ndarray:
-        # A motion (T, n) is refused here: animate() plays it.
-        return check_configuration(robot.q if q is None else q, robot.n, robot.coordinate_names)
 
-    def _require_drawing(self) -> RobotDrawing:
-        assert self._drawing is not None, "the scene has no robot yet"
-        return self._drawing
+def _is_animation(op: Op) -> bool:
+    content = op.content
+    kind = content["command"]["type"] if content["op"] == "command" else content.get("type")
+    return kind == "set_animation"
 
 
 def _check_robot(robot: Any) -> None:
     if not isinstance(robot, Robot):
         raise InvalidInputError("robot", robot, "a robotconf Robot", problem="not a robot:")
-
-
-def _clean_name(name: Any) -> str:
-    if not isinstance(name, str) or not name or not all(c.isalnum() or c in "_-" for c in name):
-        raise InvalidInputError("name", name, "letters, digits, '_' or '-'")
-    return name
-
-
-def _transform_command(path: str, matrix: np.ndarray) -> Op:
-    return command_op({"type": "set_transform", "path": path, "matrix": matrix.T.ravel().tolist()})
-
-
-def _log_key(op: Op) -> tuple[str, str]:
-    content = op.content
-    if content["op"] == "command":
-        command = content["command"]
-        return (command["type"], command.get("path", ""))
-    if content["op"] == "packed":
-        # Keyed like its JSON form: one packed set_object per path, not one for the scene.
-        return (content["type"], content["path"])
-    if content["op"] in ("transforms", "labels", "visible"):
-        return (content["op"], "|".join(content["paths"]))
-    if content["op"] == "animation":
-        return ("animation", content["action"])
-    return (content["op"], "")
-
-
-def view(robot: Robot, q: Any = None, *, display: bool = True, **options: Any) -> Scene:
-    """Show a robot in a 3D pane in the notebook (see :class:`Scene` for ``options``).
-
-    Examples
-    --------
-    >>> import robotconf as rc
-    >>> scene = rc.view(rc.Robot([rc.Module("Rz")], end_effector=(1, 0, 0)), display=False)
-    >>> scene.labels()
-    ['M1 (0.00, 0.00, 0.00)', 'EE (1.00, 0.00, 0.00)']
-    """
-    scene = Scene(robot, q, **options)
-    if display:
-        from IPython.display import display as show
-
-        show(scene)
-        scene._shown_in_cell = _execution_count()
-    return scene
-
-
-def _execution_count() -> int | None:
-    """The running cell's number in IPython, or None outside it."""
-    import sys
-
-    if "IPython" not in sys.modules:
-        return None
-    from IPython import get_ipython
-
-    shell = get_ipython()
-    return None if shell is None else int(shell.execution_count)

@@ -1,32 +1,30 @@
 """The taught points of a robot program in the 3D pane: small spheres labelled P1, P2, ….
 
-:class:`TaughtPoints` is the part of :class:`~robotconf.scene.Scene` that marks where a
-program's moves end (and the via points of its CIRC moves) under
+:class:`TaughtPointsLayer` is the part of :class:`~robotconf.scene.Scene` that marks where
+a program's moves end (and the via points of its CIRC moves) under
 ``/meshcat/robotconf/taught``: one small sphere and one label per point. It uses the
 scene's own ops (meshcat ``set_object``, the batched transforms and label texts), so it
 needs nothing new on the page, and it sits in the scene log: a reloaded page, a second
 view and an HTML export show the points too. The group lives beside the robot, not under
 it, so a rebuilt robot keeps it; the spheres' size follows the robot drawing's size.
-Labels of points that coincide are merged (``"P1, P4"``), as the robot's own are.
+Labels of points that coincide are merged (``"P1, P4"``), as the robot's own are, and
+hide with the robot's labels ("labels off"). The scene keeps every marker in view.
 """
 
 from __future__ import annotations
 
-from collections.abc import Sequence
-from typing import TYPE_CHECKING, Any
+from collections.abc import Callable, Sequence
+from typing import Any
 
 import numpy as np
 
 from .._errors import InvalidInputError
 from .._validation import as_float_array, one_line
-from ._commands import ROOT, Op, command_op, labels_op, set_object_op, shape_object, transforms_op
-from ._drawing import LABEL_HEIGHT, SPHERE_RADIUS, RobotDrawing
+from ._commands import ROOT, Op, Outbox, labels_op, set_object_op, shape_object, transforms_op
+from ._drawing import SPHERE_RADIUS
 from ._labels import merge_coincident
 
-if TYPE_CHECKING:
-    from ._commands import SceneLog
-
-__all__ = ["TaughtPoints", "TAUGHT", "TAUGHT_COLORS", "TAUGHT_RADIUS", "MAX_TAUGHT"]
+__all__ = ["TaughtPointsLayer", "TAUGHT", "TAUGHT_COLORS", "TAUGHT_RADIUS", "MAX_TAUGHT"]
 
 #: The markers' group: ``…/taught/<k>/sphere`` and ``…/taught/<k>/label`` per point.
 TAUGHT = f"{ROOT}/taught"
@@ -62,43 +60,47 @@ def _check_labels(labels: Any, count: int, field: str, default: str) -> list[str
     return texts
 
 
-class TaughtPoints:
-    """The taught-point methods of :class:`~robotconf.scene.Scene` (a mixin: the scene
-    provides ``_send``, ``_log``, ``_digits`` and ``_require_drawing``).
+class TaughtPointsLayer:
+    """The taught points of a program, marked beside the robot.
+
+    Parameters
+    ----------
+    outbox : Outbox
+    size : callable
+        Returns the robot drawing's size (length units): markers are drawn at its scale.
+    digits : callable
+        Returns the robot labels' decimals: points equal at that precision share a label.
 
     Examples
     --------
-    >>> import robotconf as rc
-    >>> from robotconf.scene import RecordingChannel, Scene
-    >>> scene = Scene(rc.preset("paper"), channel=RecordingChannel())
-    >>> scene.show_taught_points([[70, 0, 20], [40, 10, 30], [70, 0, 20]])
-    >>> scene.taught_labels
+    >>> from robotconf.scene import RecordingChannel
+    >>> layer = TaughtPointsLayer(Outbox(RecordingChannel()), lambda: 90.0, lambda: 1)
+    >>> layer.show([[70, 0, 20], [40, 10, 30], [70, 0, 20]])
+    >>> layer.labels
     ['P1, P3', 'P2', '']
-    >>> scene.clear_taught_points(); scene.taught_labels
+    >>> layer.clear(); layer.labels
     []
     """
 
-    _log: SceneLog
-    _digits: int
-
-    if TYPE_CHECKING:  # provided by the scene
-
-        def _send(
-            self, ops: list[Op], *, log: bool = True, logged: list[Op] | None = None
-        ) -> None: ...
-
-        def _require_drawing(self) -> RobotDrawing: ...
-
-    # What the markers show now: their points, label texts and size (None: nothing).
-    _taught_look: tuple[bytes, tuple[str, ...], tuple[str, ...], float] | None = None
-    _taught_labels: tuple[str, ...] = ()
+    def __init__(
+        self, outbox: Outbox, size: Callable[[], float], digits: Callable[[], int]
+    ) -> None:
+        self._outbox = outbox
+        self._size = size
+        self._digits = digits
+        # What the markers show now: their points, label texts, kinds and size (None:
+        # nothing), and whether their labels show.
+        self._look: tuple[bytes, tuple[str, ...], tuple[str, ...], float] | None = None
+        self._texts: tuple[str, ...] = ()
+        self._points = np.zeros((0, 3))
+        self.labels_visible = True
 
     @property
-    def taught_labels(self) -> list[str]:
+    def labels(self) -> list[str]:
         """The label of every marker shown (``""`` for one merged into another's label)."""
-        return list(self._taught_labels)
+        return list(self._texts)
 
-    def show_taught_points(
+    def show(
         self,
         points: Any,
         labels: Sequence[str] | None = None,
@@ -139,25 +141,42 @@ class TaughtPoints:
                 problem="too many:",
             )
         if not len(everything):
-            self.clear_taught_points()
+            self.clear()
             return
         kinds = tuple(["point"] * len(taught) + ["via"] * len(vias))
-        texts = tuple(merge_coincident(names, everything, self._digits, positions=False))
-        size = self._require_drawing().size
+        texts = tuple(merge_coincident(names, everything, self._digits(), positions=False))
+        size = self._size()
         look = (everything.tobytes(), texts, kinds, size)
-        if look == self._taught_look:
+        if look == self._look:
             return  # nothing changed: no message
-        self.clear_taught_points()
-        self._send(_marker_ops(everything, texts, kinds, size))
-        self._taught_look, self._taught_labels = look, texts
+        self.clear()
+        ops = _marker_ops(everything, texts, kinds, size)
+        ops.append(self.visibility_op(self.labels_visible, len(everything)))
+        self._outbox.send(ops)
+        self._look, self._texts, self._points = look, texts, everything
 
-    def clear_taught_points(self) -> None:
+    def clear(self) -> None:
         """Remove the markers (from live views and from what a reload shows)."""
-        if self._taught_look is None:
+        if self._look is None:
             return
-        self._log.forget(TAUGHT)
-        self._send([command_op({"type": "delete", "path": TAUGHT})], log=False)
-        self._taught_look, self._taught_labels = None, ()
+        self._outbox.delete(TAUGHT)
+        self._look, self._texts, self._points = None, (), np.zeros((0, 3))
+
+    def set_labels_visible(self, visible: bool) -> None:
+        """Show or hide the markers' labels (the spheres stay)."""
+        self.labels_visible = visible
+        if self._look is not None:
+            self._outbox.send([self.visibility_op(visible, len(self._texts))])
+
+    def visibility_op(self, visible: bool, count: int | None = None) -> Op:
+        """Show or hide the labels of ``count`` markers (default: those shown)."""
+        count = len(self._texts) if count is None else count
+        paths = [f"{TAUGHT}/{k}/label" for k in range(count)]
+        return Op({"op": "visible", "paths": paths, "value": bool(visible)})
+
+    def extent(self) -> np.ndarray:
+        """Where the markers stand, shape (k, 3)."""
+        return self._points
 
 
 def _marker_ops(
@@ -171,11 +190,11 @@ def _marker_ops(
     for k, (point, kind) in enumerate(zip(points, kinds, strict=True)):
         sphere, label = f"{TAUGHT}/{k}/sphere", f"{TAUGHT}/{k}/label"
         ops.append(set_object_op(sphere, shape_object("sphere", radius, TAUGHT_COLORS[kind])))
-        ops.append(set_object_op(label, shape_object("label", LABEL_HEIGHT * size, 0)))
-        # The label stands just above its sphere; the page keeps it a fixed size on screen.
-        for path, lift in ((sphere, 0.0), (label, 1.5 * radius)):
+        ops.append(set_object_op(label, shape_object("label", radius, 0)))
+        # The label's anchor is the point itself: the page writes the text just above it.
+        for path in (sphere, label):
             matrix = np.eye(4)
-            matrix[:3, 3] = point + (0.0, 0.0, lift)
+            matrix[:3, 3] = point
             paths.append(path)
             matrices.append(matrix)
     ops.append(transforms_op(paths, np.array(matrices)))

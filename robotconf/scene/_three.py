@@ -22,6 +22,7 @@ import numpy as np
 
 __all__ = [
     "FLOAT32_ARRAY",
+    "float32_array",
     "float32_attribute",
     "sphere",
     "cylinder",
@@ -31,7 +32,7 @@ __all__ = [
     "triad",
     "point_cloud",
     "polyline",
-    "label_sprite",
+    "label_anchor",
 ]
 
 #: msgpack extension code of a Float32Array in meshcat's viewer.
@@ -59,6 +60,16 @@ def _uuid() -> str:
     return str(uuid.uuid4())
 
 
+def float32_array(values: np.ndarray) -> msgpack.ExtType:
+    """``values`` flattened to float32, as the msgpack extension the viewer decodes into a
+    JavaScript ``Float32Array``.
+
+    >>> len(float32_array(np.zeros((2, 3))).data)
+    24
+    """
+    return msgpack.ExtType(FLOAT32_ARRAY, np.ascontiguousarray(values, dtype=np.float32).tobytes())
+
+
 def float32_attribute(values: np.ndarray) -> dict[str, Any]:
     """A buffer attribute: one row of ``values`` (N, k) per vertex, packed as float32.
 
@@ -70,7 +81,7 @@ def float32_attribute(values: np.ndarray) -> dict[str, Any]:
     return {
         "itemSize": int(rows.shape[1]),
         "type": "Float32Array",
-        "array": msgpack.ExtType(FLOAT32_ARRAY, rows.tobytes()),
+        "array": float32_array(rows),
         "normalized": False,
     }
 
@@ -202,42 +213,27 @@ def polyline(points: np.ndarray, color: int) -> dict[str, Any]:
     return _object("Line", geometry, material)
 
 
-def label_sprite(height: float) -> dict[str, Any]:
-    """A text sprite ``height`` tall, drawn on a canvas by the viewer (robotconf's own).
+def label_anchor(clearance: float) -> dict[str, Any]:
+    """An empty object that marks where a label stands (its text is drawn by the page).
 
-    meshcat's viewer draws ``"_text"`` textures on a canvas; robotconf's glue reshapes it
-    to 512×64 and redraws it when the text changes, so the sprite is created once.
+    The page draws each label as text beside the anchor's point on screen, at one size at
+    any zoom, at least ``clearance`` (length units: the radius of the sphere drawn there)
+    away from the point, wrapped inside the pane and with a leader line when it had to
+    move farther; in the scene itself the anchor is invisible. An animation moves the
+    anchors like any other item, so the labels follow the robot.
+
+    >>> anchor = label_anchor(2.5)["object"]
+    >>> anchor["type"], anchor["userData"]
+    ('Object3D', {'clearance': 2.5})
     """
-    texture, material, sprite = (_uuid() for _ in range(3))
-    tall = height / 0.7  # the text fills about 70 % of the band
-    wide = 8.0 * tall
     return {
         "metadata": {"version": 4.5, "type": "Object"},
         "geometries": [],
-        "textures": [
-            {
-                "uuid": texture,
-                "type": "_text",
-                "text": " ",
-                "font_size": 28,
-                "font_face": "sans-serif",
-            }
-        ],
-        "images": [],
-        "materials": [
-            {
-                "uuid": material,
-                "type": "SpriteMaterial",
-                "map": texture,
-                "transparent": True,
-                "depthTest": False,
-            }
-        ],
+        "materials": [],
         "object": {
-            "uuid": sprite,
-            "type": "Sprite",
-            "material": material,
-            "matrix": [wide, 0, 0, 0, 0, tall, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1],
-            "renderOrder": 10,
+            "uuid": _uuid(),
+            "type": "Object3D",
+            "matrix": np.eye(4).ravel().tolist(),
+            "userData": {"clearance": float(clearance)},
         },
     }

@@ -6,7 +6,8 @@ runs) reaches the page once per kernel through a hidden model, and each
 scene's ops travel over the widget's comm channel, batched (one message per update, ≤ 60
 per second with an end-of-burst flush: Jupyter drops IOPub messages beyond about 1000/s).
 A new view asks for the scene log and gets a replay, so page reloads and second views
-show the same scene.
+show the same scene. The widget's page code (``js/``) draws the bar above the pane and
+plays animations; what it sends back goes to :meth:`Scene.receive_from_page`.
 """
 
 from __future__ import annotations
@@ -22,6 +23,7 @@ from ipywidgets import widget_serialization
 
 from ._assets import meshcat_source, script
 from ._commands import Op, pack_ops
+from ._html import PAGE_SCRIPTS
 
 __all__ = ["SceneWidget", "WidgetChannel", "coalesce_ops", "meshcat_source", "script"]
 
@@ -46,7 +48,7 @@ def shared_code() -> MeshcatCode:
 class SceneWidget(anywidget.AnyWidget):
     """One 3D pane in the notebook. Use it through :class:`robotconf.scene.Scene`."""
 
-    _esm = traitlets.Unicode(script("glue", "widget")).tag(sync=True)
+    _esm = traitlets.Unicode(script(*PAGE_SCRIPTS, "widget")).tag(sync=True)
     height = traitlets.Int(420).tag(sync=True)
     # Keeping a reference in the state makes the front end create the code model first.
     code = traitlets.Instance(MeshcatCode).tag(sync=True, **widget_serialization)
@@ -74,7 +76,8 @@ class WidgetChannel:
         self._pending: list[Op] = []
         self._timer: asyncio.TimerHandle | None = None
         self.sent = 0
-        #: Called with every other message a view sends (playback time reports).
+        #: Called with every other message a view sends (the bar's requests, the player's
+        #: reports): :meth:`Scene.receive_from_page`.
         self.on_event: Callable[[dict[str, Any]], None] | None = None
         widget.on_msg(self._on_message)
 
@@ -132,9 +135,9 @@ class WidgetChannel:
 def coalesce_ops(ops: list[Op]) -> list[Op]:
     """Merge held transforms and labels: state, not events, so only the newest counts.
 
-    Within each run of transforms and labels ops (a command ends a run: objects it creates
-    or deletes must see the transforms in order), one transforms op keeps the newest
-    matrix of every path and one labels op the newest text of every label.
+    Within each run of transforms and labels ops (any other op ends a run: objects it
+    creates or deletes must see the transforms in order), one transforms op keeps the
+    newest matrix of every path and one labels op the newest text of every label.
 
     Examples
     --------
@@ -148,7 +151,7 @@ def coalesce_ops(ops: list[Op]) -> list[Op]:
     """
     out: list[Op] = []
     matrices: dict[str, bytes] = {}
-    labels: dict[str, tuple[str, int | None]] = {}
+    labels: dict[str, str] = {}
 
     def end_run() -> None:
         if matrices:
@@ -157,15 +160,7 @@ def coalesce_ops(ops: list[Op]) -> list[Op]:
             )
             matrices.clear()
         if labels:
-            content: dict[str, Any] = {
-                "op": "labels",
-                "paths": list(labels),
-                "texts": [text for text, _ in labels.values()],
-            }
-            rows = [row for _, row in labels.values()]
-            if all(row is not None for row in rows):
-                content["rows"] = rows
-            out.append(Op(content))
+            out.append(Op({"op": "labels", "paths": list(labels), "texts": list(labels.values())}))
             labels.clear()
 
     for op in ops:
@@ -176,10 +171,9 @@ def coalesce_ops(ops: list[Op]) -> list[Op]:
                 matrices.pop(path, None)
                 matrices[path] = data[64 * k : 64 * (k + 1)]
         elif kind == "labels":
-            rows = op.content.get("rows") or [None] * len(op.content["paths"])
-            for path, text, row in zip(op.content["paths"], op.content["texts"], rows, strict=True):
+            for path, text in zip(op.content["paths"], op.content["texts"], strict=True):
                 labels.pop(path, None)
-                labels[path] = (text, row)
+                labels[path] = text
         else:
             end_run()
             out.append(op)

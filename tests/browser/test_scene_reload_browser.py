@@ -3,7 +3,8 @@
 A scene that played a motion and was then moved to a pose with ``scene.update(q)`` is
 reloaded in JupyterLab (saved notebook, same kernel: the views are rebuilt from the
 kernel's scene log). The red end-effector must stand where a fresh view of that pose
-puts it, and not where the animation ended (the parking pose).
+puts it, and not where the animation ended (the parking pose); the bar shows the view
+options the kernel holds (labels "names", frames on), and the labels say so.
 """
 
 from __future__ import annotations
@@ -28,7 +29,7 @@ CELLS = [
     # One second of motion that ends where it started: the parking pose.
     "motion = rc.simulate(robot, {'q1': rc.signals.Sine(amplitude=1.5, frequency=1.0)},"
     " t_end=1.0, dt=0.02)\nscene.animate(motion)",
-    f"scene.update({POSE})",
+    f"scene.update({POSE})\nscene.set_label_mode('names')\nscene.show_frames(True)",
     # References, framed like `scene` (fitted at the parking pose): the current pose …
     f"current = rc.view(robot, height=360)\ncurrent.update({POSE})",
     # … and the pose the old animation would leave behind.
@@ -80,4 +81,12 @@ def test_reload_shows_the_current_pose_not_the_animation(lab: Lab, page) -> None
     scene, current, parked = _centroids(page)
     assert np.linalg.norm(scene - current) < 4, (scene, current, parked)
     assert np.linalg.norm(scene - parked) > 30
+    bar = page.locator(f"{NOTEBOOK} .robotconf-scene-controls").first
+    mode = bar.locator(".robotconf-scene-label-mode [aria-checked='true']")
+    assert mode.get_attribute("data-mode") == "names"
+    assert bar.locator(".robotconf-scene-frames").get_attribute("aria-pressed") == "true"
+    assert bar.locator(".robotconf-scene-clock").inner_text() == "no animation"
+    first = page.locator(f"{NOTEBOOK} .robotconf-scene").first
+    texts = first.locator(".robotconf-scene-label:not([hidden])").all_inner_texts()
+    assert sorted(texts) == ["EE", "M1", "M2", "M3"], texts
     assert not page.errors, page.errors

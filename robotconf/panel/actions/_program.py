@@ -107,9 +107,12 @@ class EditMove(Action):
 
     def apply(self, state: PanelState) -> PanelState:
         i = _move_index(state, self.index)
-        draft = edit_move(
-            state.document.program, state.robot, i, self.name, self.value, self.component
-        )
+        try:
+            draft = edit_move(
+                state.document.program, state.robot, i, self.name, self.value, self.component
+            )
+        except InvalidInputError as error:  # a move refuses an out-of-bounds number itself
+            raise error.within(f"program.moves[{i}]") from None
         return _checked(state, draft)
 
     @property

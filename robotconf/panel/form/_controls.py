@@ -1,4 +1,4 @@
-"""The controls a form can show, as plain dicts the page draws (see ``js/form.js``).
+"""The controls a form can show, as plain dicts the page draws (``js/controls.js``).
 
 Every builder returns a JSON-able dict; a form is a list of :func:`row`\\ s of lines of
 controls. Text is never markup: the page writes every label, message and option as text.

@@ -28,7 +28,8 @@ import traitlets
 __all__ = ["Form", "FormEvent", "EVENTS", "find_control"]
 
 _HERE = Path(__file__).parent / "js"
-_SCRIPT = (_HERE / "form.js").read_text("utf-8")
+#: The control views first, then the form that uses them: one module for the page.
+_SCRIPT = "\n".join((_HERE / name).read_text("utf-8") for name in ("controls.js", "form.js"))
 _STYLE = (_HERE / "form.css").read_text("utf-8")
 
 #: What the page reports: a slider drag or a stepped box (``value``), typed text sent
@@ -245,7 +246,23 @@ class _User:
         self._send("typing", text=str(text))
 
     def choose(self, value: Any) -> None:
-        """Pick ``value`` in a dropdown or a toggle."""
+        """Pick the option whose value (or else whose label) is ``value`` in a dropdown
+        or a toggle.
+
+        Raises
+        ------
+        ValueError
+            No option has that value or label (the page offers only its options).
+        """
+        options = self._form.control(self._key).get("options", [])
+        values = [option[1] for option in options]
+        if value not in values:
+            labels = [option[0] for option in options]
+            if value not in labels:
+                raise ValueError(
+                    f"{self._key}: no option {value!r}; allowed: {', '.join(map(repr, labels))}"
+                )
+            value = values[labels.index(value)]
         self._send("choose", value=value)
 
     def click(self) -> None:

@@ -20,7 +20,7 @@ from ...programs import Program, ProgramReport
 from .. import actions as act
 from .._feedback import Feedback
 from ..form import Form, FormEvent, button, message, number, row, text
-from ..state import PanelState
+from ..state import PanelState, Units, in_units
 from ..state._program_draft import build
 from ..support._app_mode import code_hint
 from ..viewport import Extras
@@ -38,12 +38,13 @@ INTRO = (
 )
 
 
-def violations_by_move(report: ProgramReport, moves: int) -> list[list[str]]:
-    """The core's message of every violation, listed under the move that causes it."""
+def violations_by_move(report: ProgramReport, moves: int, units: Units) -> list[list[str]]:
+    """The core's message of every violation (in the panel's units), listed under the
+    move that causes it."""
     found: list[list[str]] = [[] for _ in range(moves)]
     for violation in report:
         if 0 <= violation.move < moves:
-            found[violation.move].append(violation.message)
+            found[violation.move].append(in_units(violation.message, units))
     return found
 
 
@@ -104,7 +105,7 @@ class ProgramView:
         built = self._build(state)
         if not isinstance(built, InvalidInputError):
             return None
-        message = str(built.within("program"))  # as Run and saving say it
+        message = in_units(str(built.within("program")), state.units)  # as Run says it
         match = _MOVE_FIELD.search(built.field)
         if match is not None:
             return f"program.moves[{match.group(1)}]", message
@@ -147,7 +148,9 @@ class ProgramView:
             run is not None and not isinstance(built, InvalidInputError) and built == run.program
         )
         moves = draft.moves
-        violations = violations_by_move(run.report, len(moves)) if current and run else []
+        violations = (
+            violations_by_move(run.report, len(moves), state.units) if current and run else []
+        )
         speed = draft.settings.get("cartesian_speed") or default_limits(robot).cartesian_speed
         can_undo, can_redo = self._history()
         rows = [

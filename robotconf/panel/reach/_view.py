@@ -20,7 +20,7 @@ from .._feedback import Feedback
 from .._ranges import length_scale, length_step
 from ..editor import Quantity, Ranges, number_spec, read_number
 from ..form import Form, FormEvent, button, check, message, row, text, toggle
-from ..state import PanelState, target_numbers, target_of
+from ..state import PanelState, in_units, target_numbers, target_of
 from ..viewport import Call, Extras
 
 __all__ = ["ReachView", "TOLERANCE", "status_text"]
@@ -122,8 +122,9 @@ class ReachView:
                 )
             )
         status, tone = status_text(state)
+        status = in_units(status, units)
         outcome = reach.outcome
-        warning = outcome.warning if outcome is not None else ""
+        warning = in_units(outcome.warning, units) if outcome is not None else ""
         rows = [
             row(
                 "reach",
@@ -180,7 +181,8 @@ class ReachView:
             [text(f"Closed-form solutions{family}: {found.count}", tone="title")]
         ]
         if found.note:
-            lines.append([text(found.note, tone="note", css_class="robotconf-reach-note")])
+            note = in_units(found.note, state.units)
+            lines.append([text(note, tone="note", css_class="robotconf-reach-note")])
         solutions = found.solutions
         if solutions is not None:
             buttons = []

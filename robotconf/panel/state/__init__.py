@@ -27,10 +27,12 @@ from ._panel_state import EDITORS, PROMPTS, Document, PanelState, ProgramRun, Pr
 from ._program_draft import ProgramDraft
 from ._reach import REACH_MODES, ReachOutcome, ReachState, target_numbers, target_of
 from ._units import LENGTH_UNITS, Units
+from ._units_text import in_units
 from ._view import LABEL_MODES, RESULT_VIEWS, SOURCES, TABS, Playback, ViewOptions
 from ._wizard import MAX_WIZARD_MODULES, WizardDraft, WizardModule
 
 __all__ = [
+    "in_units",
     # the state
     "PanelState",
     "Document",

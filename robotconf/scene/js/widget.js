@@ -1,4 +1,4 @@
-// anywidget front end of robotconf.scene.Scene (appended to glue.js).
+// anywidget front end of robotconf.scene.Scene (appended to glue.js and the other parts).
 
 // anywidget imports this module once per model, so page-wide state lives on globalThis:
 // the viewer code arrives once per kernel through a hidden model (see loader.js).
@@ -20,28 +20,16 @@ function rcTimeout(promise, ms) {
 }
 
 async function render({ model, el }) {
-  const height = model.get("height");
-  const wrapper = document.createElement("div");
-  wrapper.className = "robotconf-scene";
-  wrapper.style.cssText = `position: relative; width: 100%; height: ${height}px; overflow: hidden;`;
-  const pane = document.createElement("div");
-  pane.style.cssText = "width: 100%; height: 100%;";
-  const status = document.createElement("div");
-  status.className = "robotconf-scene-status";
-  status.style.cssText = "position: absolute; left: 8px; top: 8px; font: 13px sans-serif;";
-  status.textContent = "Loading the 3D viewer…";
-  wrapper.append(pane, status);
-  el.appendChild(wrapper);
-
   let handle = null;
   let closed = false;
+  const page = rcScenePage(el, model.get("height"), (message) => model.send(message));
   const view = Math.random().toString(36).slice(2);
   const pending = [];
   let replayed = false;
   const onMessage = (msg, buffers) => {
     if (msg.kind === "replay" && msg.view !== view) return;
     if (msg.kind !== "batch" && msg.kind !== "replay") return;
-    // Batches sent before our replay are part of it: applying them too would play an
+    // Batches sent before our replay are part of it: applying them too would load an
     // animation the replay then loads again.
     if (msg.kind === "replay") replayed = true;
     else if (!replayed) return;
@@ -49,32 +37,18 @@ async function render({ model, el }) {
     else pending.push([msg, buffers]);
   };
   model.on("msg:custom", onMessage);
-  // While an animation plays, tell the kernel where it is (4 times a second, and once
-  // when it stops) so the control bar's time slider follows.
-  let reported = 0;
-  let wasPlaying = false;
-  const reportTime = (viewer) => {
-    const animator = viewer.animator;
-    const now = performance.now();
-    if ((animator.playing && now - reported > 250) || (!animator.playing && wasPlaying)) {
-      reported = now;
-      model.send({ kind: "time", value: animator.time, playing: animator.playing });
-    }
-    wasPlaying = animator.playing;
-  };
   // Views drop what was sent before they existed: ask the kernel for the scene log.
   model.send({ kind: "hello", view });
 
   try {
     const MeshCat = await rcTimeout(rcShared().ready, 20000);
     if (closed) return () => {};
-    handle = rcCreateViewer(MeshCat, pane, height, reportTime);
-    status.remove();
+    handle = rcStartViewer(MeshCat, page);
     el.dataset.robotconfScene = "ready";
     el.robotconfViewer = handle.viewer; // for the page's own tools and benchmarks
     for (const [msg, buffers] of pending.splice(0)) rcApply(handle.viewer, msg.ops, buffers);
   } catch (error) {
-    status.textContent =
+    page.status.textContent =
       "The 3D viewer did not load (" + error.message + "). Run the cell again; " +
       "scene.export_html(path) saves a copy that opens in any browser.";
     el.dataset.robotconfScene = "failed";

@@ -1,8 +1,8 @@
 """A program as JSON data (the ``"program"`` section of a robotconf file) and back.
 
 Every field is written, ``null`` for a default, and every float as Python writes it
-(its shortest exact form), so ``Program.from_dict(p.to_dict(), robot) == p`` bit for
-bit. Reading checks the JSON types here (numbers, lists, text, ``null``; booleans,
+(its shortest exact form), so ``program_from_dict(program_to_dict(p), robot) == p`` bit
+for bit. Reading checks the JSON types here (numbers, lists, text, ``null``; booleans,
 NaN and infinities refused) and leaves the rest to :class:`Program`, naming
 ``program.moves[i].field``.
 """
@@ -14,12 +14,10 @@ from typing import TYPE_CHECKING, Any
 
 from .._errors import InvalidInputError
 from .._validation import check_json_number, check_json_object, one_line
-from ._limits import LIMIT_NAMES
-from ._moves import MOVE_TYPES
+from ..programs import LIMIT_NAMES, MAX_MOVES, MOVE_TYPES, Program
 
 if TYPE_CHECKING:
     from ..kinematics import Robot
-    from ._program import Program
 
 __all__ = ["program_to_dict", "program_from_dict"]
 
@@ -37,7 +35,7 @@ def program_to_dict(program: Program) -> dict[str, Any]:
     """``{"start": …, "joint_speed": …, …, "moves": [...]}`` (see the module notes).
 
     >>> import robotconf as rc
-    >>> from robotconf.programs import Program, Wait
+    >>> from robotconf.programs import Wait
     >>> program_to_dict(Program(rc.preset("paper"), [Wait(1)]))["moves"]
     [{'type': 'Wait', 'seconds': 1.0}]
     """
@@ -70,7 +68,10 @@ def _move(value: Any, path: str) -> Any:
     names = [f.name for f in fields(cls)]
     check_json_object(value, path, {"type": True, **{name: False for name in names}})
     given = {name: _value(value[name], f"{path}.{name}") for name in names if name in value}
-    return cls(**given)
+    try:
+        return cls(**given)
+    except InvalidInputError as error:
+        raise error.within(path) from None
 
 
 def program_from_dict(value: Any, robot: Robot, path: str = "program") -> Program:
@@ -81,8 +82,6 @@ def program_from_dict(value: Any, robot: Robot, path: str = "program") -> Progra
     >>> program_from_dict(data, rc.preset("paper")).limits.joint_speed
     array([2., 2., 2.])
     """
-    from ._program import MAX_MOVES, Program
-
     check_json_object(value, path, _PROGRAM_KEYS)
     moves = value["moves"]
     if not isinstance(moves, list) or len(moves) > MAX_MOVES:
