@@ -10,7 +10,7 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from .lab_driver import NOTEBOOK, choose, click
+from .lab_driver import NOTEBOOK, choose, click, wait_idle
 
 #: The Motion tab's result views, a toggle of the results form (not tabs of the panel).
 RESULT_VIEWS = {"DVA table": "table", "statistics": "statistics", "plot": "plot"}
@@ -85,15 +85,18 @@ def show_panel(page: Any) -> None:
 def choose_tab(page: Any, title: str) -> None:
     """Show the panel's tab called ``title``, or the Motion tab's result view of that
     name ("DVA table", "statistics", "plot")."""
+    # A tab clicked while the kernel still works on a form's event can be lost (see
+    # test_panel_state_browser.py): a student waits for the last answer, so do we.
+    wait_idle(page)
     if title in RESULT_VIEWS:
         choose(page, "results.view", title)
-        page.wait_for_timeout(400)
-        return
-    tab = page.locator(".jupyter-widget-TabPanel .lm-TabBar-tab").filter(
-        has_text=re.compile(f"^{re.escape(title)}$")
-    )
-    tab.first.click()
+    else:
+        tab = page.locator(".jupyter-widget-TabPanel .lm-TabBar-tab").filter(
+            has_text=re.compile(f"^{re.escape(title)}$")
+        )
+        tab.first.click()
     page.wait_for_timeout(400)
+    wait_idle(page)
 
 
 def choose_length_unit(page: Any, length_unit: str) -> None:

@@ -8,12 +8,15 @@ The old panel, whose widgets each held a piece of the truth, broke these:
 - after the guided mode and a preset, the 3D view and p_EE showed another robot than
   ``panel.robot``, and a preset choice was followed by a stray edit (undo went nowhere);
 - an animation stopped before its end, or the kernel thought it still played.
+
+One more is not fixed yet (marked xfail): a tab clicked while the kernel works is lost.
 """
 
 from __future__ import annotations
 
 import re
 
+import pytest
 from playwright.sync_api import expect
 
 import robotconf as rc
@@ -277,3 +280,44 @@ def test_a_run_and_a_program_play_to_their_end(lab: Lab, page) -> None:  # type:
     assert times == sorted(times) and len(set(times)) >= 4, times
     _check_ended(page, 1, "program", times[-1])
     assert not page.errors, page.errors
+
+
+# -- d. a tab clicked while the kernel works ---------------------------------------------
+
+BUSY = [
+    'import robotconf as rc\npanel = rc.configurator(rc.preset("paper"))',
+    "print('tab', panel.state.view.tab, panel.results.selected_index)",
+]
+
+
+@pytest.mark.xfail(
+    strict=True,
+    reason="a tab clicked while the kernel handles a form's event is lost: JupyterLab sends "
+    "comm messages to a kernel subshell, and the Tab's selected_index is handled on the "
+    "kernel's main thread while the forms' events run on the subshell's thread; the click "
+    "is dropped while the other thread renders (_tab_clicked sees _rendering) or "
+    "overwritten when the other thread commits the state it computed before it, and the "
+    "render sets selected_index back: the page shows the Motion tab again (or an empty one)",
+)
+def test_a_tab_clicked_during_a_run_shows_and_stays(lab: Lab, page) -> None:  # type: ignore[no-untyped-def]
+    write_notebook(lab.root / "busy.ipynb", BUSY)
+    open_notebook(page, lab.url("busy.ipynb"))
+    run_cell(page, 0)
+    page.wait_for_selector("[data-robotconf-scene='ready']", timeout=60_000)
+    wait_idle(page)
+    # A run of 150 001 samples: a second or more of the kernel's time.
+    choose(page, "signals.q3", "RepeatingSequence")
+    type_number(page, "t_end", 300)
+    type_number(page, "dt", 0.002)
+    wait_idle(page)
+    click(page, "run")
+    page.wait_for_timeout(300)
+    tab = page.locator(f"{NOTEBOOK} .lm-TabBar-tab", has_text="Matrices").first
+    tab.click()
+    page.wait_for_timeout(1000)
+    wait_idle(page)
+    page.wait_for_timeout(2000)
+    run_cell(page, 1)
+    assert _values(output_text(page, 1), "tab") == "matrices 1", output_text(page, 1)
+    expect(page.locator(f"{NOTEBOOK} .robotconf-matrices pre").first).to_be_visible()
+    assert "lm-mod-current" in (tab.get_attribute("class") or "")
