@@ -17,14 +17,8 @@ Every process it starts is stopped at the end, also when a step fails.
 from __future__ import annotations
 
 import contextlib
-import os
-import secrets
-import socket
-import subprocess
 import sys
 import tempfile
-import time
-import urllib.request
 from collections.abc import Callable, Iterator
 from io import BytesIO
 from pathlib import Path
@@ -34,10 +28,12 @@ ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the browser tests' helpers drive the same workflow
 
 from tests.browser.lab_driver import (  # noqa: E402
+    CHROMIUM,
+    CHROMIUM_ARGS,
     choose,
     control,
     open_notebook,
-    quiet_lab_config,
+    serve_lab,
     wait_idle,
     write_notebook,
 )
@@ -54,7 +50,6 @@ from tests.browser.paper_workflow import (  # noqa: E402
 )
 
 OUT = ROOT / "docs" / "img"
-CHROMIUM = os.environ.get("ROBOTCONF_CHROMIUM", "/usr/bin/chromium")
 VIEWPORT, WIDE = {"width": 1280, "height": 900}, {"width": 1920, "height": 1080}
 #: Largest PNG written (bytes): the docs stay light to clone.
 MAX_BYTES = 200_000
@@ -66,54 +61,8 @@ RUN = ".rc-button.robotconf-run"
 @contextlib.contextmanager
 def jupyter_lab(root: Path) -> Iterator[str]:
     """A JupyterLab serving ``root``; yields the URL of ``panel.ipynb`` in a fresh layout."""
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        port = sock.getsockname()[1]
-    token = secrets.token_hex(16)
-    env = dict(
-        os.environ,
-        JUPYTER_CONFIG_DIR=str(root / ".jupyter-config"),
-        JUPYTER_RUNTIME_DIR=str(root / ".jupyter-runtime"),
-        JUPYTERLAB_SETTINGS_DIR=str(root / ".lab-settings"),
-        JUPYTERLAB_WORKSPACES_DIR=str(root / ".lab-workspaces"),
-        MPLBACKEND="Agg",
-    )
-    quiet_lab_config(root / ".jupyter-config")
-    command = [
-        sys.executable,
-        "-m",
-        "jupyter",
-        "lab",
-        "--no-browser",
-        "--ip=127.0.0.1",
-        f"--port={port}",
-        f"--IdentityProvider.token={token}",
-        f"--ServerApp.root_dir={root}",
-        "--LabApp.news_url=",
-        *(["--allow-root"] if os.geteuid() == 0 else []),
-    ]
-    with open(root / "lab.log", "wb") as log:
-        server = subprocess.Popen(command, cwd=root, env=env, stdout=log, stderr=log)
-        try:
-            deadline = time.monotonic() + 90
-            while True:
-                try:
-                    urllib.request.urlopen(f"http://127.0.0.1:{port}/api/status?token={token}")
-                    break
-                except OSError:
-                    if time.monotonic() > deadline or server.poll() is not None:
-                        raise RuntimeError((root / "lab.log").read_text()[-2000:]) from None
-                    time.sleep(0.3)
-            yield (
-                f"http://127.0.0.1:{port}/lab/workspaces/shots/tree/panel.ipynb?reset&token={token}"
-            )
-        finally:
-            server.terminate()  # the server shuts its kernels down on the way out
-            try:
-                server.wait(timeout=30)
-            except subprocess.TimeoutExpired:
-                server.kill()
-                server.wait()
+    with serve_lab(root) as running:
+        yield running.url("panel.ipynb")
 
 
 def save(page: Any, name: str, out: Path = OUT) -> Path:
@@ -207,7 +156,7 @@ def main() -> None:
         with jupyter_lab(root) as url, sync_playwright() as playwright:
             browser = playwright.chromium.launch(
                 executable_path=CHROMIUM,
-                args=["--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader"],
+                args=CHROMIUM_ARGS,
             )
             try:
                 page = browser.new_page(viewport=VIEWPORT)

@@ -2,8 +2,17 @@
 
 from __future__ import annotations
 
+import contextlib
 import json
+import os
 import re
+import secrets
+import socket
+import subprocess
+import sys
+import time
+import urllib.request
+from collections.abc import Iterator
 from pathlib import Path
 
 import nbformat
@@ -18,6 +27,111 @@ QUIET_LAB = {
         "@jupyterlab/apputils-extension:announcements": True,
     }
 }
+
+
+#: Debian's Chromium (Playwright downloads none) and the switches a headless run needs.
+CHROMIUM = os.environ.get("ROBOTCONF_CHROMIUM", "/usr/bin/chromium")
+CHROMIUM_ARGS = [
+    "--no-sandbox",
+    "--enable-unsafe-swiftshader",
+    "--disable-gpu",
+    "--disable-quic",
+    "--no-first-run",
+    "--disable-background-networking",
+    "--disable-component-update",
+    "--disable-sync",
+]
+
+
+def free_port() -> int:
+    """A TCP port free on 127.0.0.1 right now."""
+    with socket.socket() as sock:
+        sock.bind(("127.0.0.1", 0))
+        return int(sock.getsockname()[1])
+
+
+class Lab:
+    """A running JupyterLab: its folder, port, token and process."""
+
+    def __init__(self, root: Path, port: int, token: str, process: subprocess.Popen) -> None:
+        self.root = root
+        self.port = port
+        self.token = token
+        self.process = process
+
+    def url(self, notebook: str) -> str:
+        """The notebook's URL, in a fresh workspace of its own (otherwise Lab restores the
+        previous notebook's tabs)."""
+        workspace = Path(notebook).stem
+        return (
+            f"http://127.0.0.1:{self.port}/lab/workspaces/{workspace}/tree/{notebook}"
+            f"?reset&token={self.token}"
+        )
+
+
+@contextlib.contextmanager
+def serve_lab(root: Path, env: dict[str, str] | None = None) -> Iterator[Lab]:
+    """A JupyterLab on 127.0.0.1 serving ``root``, stopped (with its kernels) at the end;
+    ``env`` adds to this process's environment (``PYTHONPATH``). Its log: ``root/lab.log``."""
+    port, token = free_port(), secrets.token_hex(16)
+    environment = dict(
+        os.environ,
+        JUPYTER_CONFIG_DIR=str(root / ".jupyter-config"),
+        JUPYTER_RUNTIME_DIR=str(root / ".jupyter-runtime"),
+        JUPYTERLAB_SETTINGS_DIR=str(root / ".lab-settings"),
+        JUPYTERLAB_WORKSPACES_DIR=str(root / ".lab-workspaces"),
+        MPLBACKEND="Agg",
+        **(env or {}),
+    )
+    quiet_lab_config(root / ".jupyter-config")
+    command = [
+        sys.executable,
+        "-m",
+        "jupyter",
+        "lab",
+        "--no-browser",
+        "--ip=127.0.0.1",
+        f"--port={port}",
+        f"--IdentityProvider.token={token}",
+        f"--ServerApp.root_dir={root}",
+        "--ServerApp.open_browser=False",
+        "--LabApp.news_url=",
+        "--LabApp.extension_manager=readonly",
+        *(["--allow-root"] if os.geteuid() == 0 else []),
+    ]
+    with open(root / "lab.log", "wb") as log:
+        server = subprocess.Popen(
+            command, cwd=root, env=environment, stdout=subprocess.DEVNULL, stderr=log
+        )
+        try:
+            deadline = time.monotonic() + 90
+            while True:
+                try:
+                    status = f"http://127.0.0.1:{port}/api/status?token={token}"
+                    urllib.request.urlopen(status, timeout=2)
+                    break
+                except OSError:
+                    if time.monotonic() > deadline or server.poll() is not None:
+                        raise RuntimeError((root / "lab.log").read_text()[-3000:]) from None
+                    time.sleep(0.3)
+            yield Lab(root, port, token, server)
+        finally:
+            server.terminate()  # the server shuts its kernels down on the way out
+            try:
+                server.wait(timeout=30)
+            except subprocess.TimeoutExpired:  # pragma: no cover
+                server.kill()
+                server.wait()
+
+
+def open_panel(page, lab: Lab, name: str, cells: list[str]) -> None:  # type: ignore[no-untyped-def]
+    """Write notebook ``name`` of ``cells``, open it, run its first cell (the panel) and
+    wait until the 3D view is ready and the kernel idle."""
+    write_notebook(lab.root / name, cells)
+    open_notebook(page, lab.url(name))
+    run_cell(page, 0)
+    page.wait_for_selector("[data-robotconf-scene='ready']", timeout=60_000)
+    wait_idle(page)
 
 
 def quiet_lab_config(config_dir: Path) -> None:

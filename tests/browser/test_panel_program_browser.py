@@ -11,14 +11,13 @@ from .lab_driver import (
     NOTEBOOK,
     choose,
     click,
-    open_notebook,
+    open_panel,
     output_text,
     pixels,
     reveal,
     run_cell,
     type_number,
     wait_idle,
-    write_notebook,
 )
 
 #: Where the Program tab's picture goes (looked at by hand after a change of the tab).
@@ -48,11 +47,7 @@ def test_taught_moves_run_with_the_trace_and_the_violations(
     lab: Lab,
     page,  # type: ignore[no-untyped-def]
 ) -> None:
-    write_notebook(lab.root / "program.ipynb", CELLS)
-    open_notebook(page, lab.url("program.ipynb"))
-    run_cell(page, 0)
-    page.wait_for_selector("[data-robotconf-scene='ready'] canvas", timeout=60_000)
-    wait_idle(page)
+    open_panel(page, lab, "program.ipynb", CELLS)
 
     tab_title = page.locator(f"{NOTEBOOK} .lm-TabBar-tab", has_text="Program").first
     reveal(tab_title)

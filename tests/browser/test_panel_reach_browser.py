@@ -14,14 +14,13 @@ from .lab_driver import (
     click,
     control,
     ee_text,
-    open_notebook,
+    open_panel,
     output_text,
     pixels,
     reveal,
     run_cell,
     type_number,
     wait_idle,
-    write_notebook,
 )
 
 #: Where the Reach tab's picture goes (looked at by hand after a change of the tab).
@@ -50,11 +49,7 @@ def test_a_target_moves_the_robot_and_shows_the_ghosts(
     lab: Lab,
     page,  # type: ignore[no-untyped-def]
 ) -> None:
-    write_notebook(lab.root / "reach.ipynb", CELLS)
-    open_notebook(page, lab.url("reach.ipynb"))
-    run_cell(page, 0)
-    page.wait_for_selector("[data-robotconf-scene='ready'] canvas", timeout=60_000)
-    wait_idle(page)
+    open_panel(page, lab, "reach.ipynb", CELLS)
     ee_before = ee_text(page)
 
     tab_title = page.locator(f"{NOTEBOOK} .lm-TabBar-tab", has_text="Reach").first

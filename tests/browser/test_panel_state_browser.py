@@ -29,14 +29,13 @@ from .lab_driver import (
     click,
     control,
     ee_text,
-    open_notebook,
+    open_panel,
     output_text,
     reveal,
     run_cell,
     shown_value,
     type_number,
     wait_idle,
-    write_notebook,
 )
 
 #: A slow kernel (the first formula, the scene) gets this long for each answer, in ms.
@@ -72,11 +71,7 @@ BOUND = [
 
 def test_ten_unit_switches_leave_q_the_file_and_the_preset_alone(lab: Lab, page) -> None:  # type: ignore[no-untyped-def]
     (lab.root / "robot.json").write_text(rc.preset("paper").to_json(), "utf-8")
-    write_notebook(lab.root / "bound_units.ipynb", BOUND)
-    open_notebook(page, lab.url("bound_units.ipynb"))
-    run_cell(page, 0)
-    page.wait_for_selector("[data-robotconf-scene='ready']", timeout=60_000)
-    wait_idle(page)
+    open_panel(page, lab, "bound_units.ipynb", BOUND)
     expect(page.locator(f"{NOTEBOOK} .robotconf-file")).to_contain_text("robot.json")
     ee = ee_text(page)
     assert "p_EE = (70, 0, 20)" in ee, ee
@@ -149,11 +144,7 @@ def _guided_robot(page) -> None:  # type: ignore[no-untyped-def]
 
 
 def test_after_the_guided_mode_and_presets_every_view_shows_the_one_robot(lab: Lab, page) -> None:  # type: ignore[no-untyped-def]
-    write_notebook(lab.root / "guided.ipynb", GUIDED)
-    open_notebook(page, lab.url("guided.ipynb"))
-    run_cell(page, 0)
-    page.wait_for_selector("[data-robotconf-scene='ready']", timeout=60_000)
-    wait_idle(page)
+    open_panel(page, lab, "guided.ipynb", GUIDED)
     ee = page.locator(f"{NOTEBOOK} .robotconf-ee").first
 
     _guided_robot(page)
@@ -208,6 +199,15 @@ PLAYBACK = [
 ]
 
 
+def _sawtooth_on_q3(page, t_end: float, dt: float | None = None) -> None:  # type: ignore[no-untyped-def]
+    """The Motion tab's settings: the sawtooth (RepeatingSequence) on q3, t_end and dt."""
+    choose(page, "signals.q3", "RepeatingSequence")
+    type_number(page, "t_end", t_end)
+    if dt is not None:
+        type_number(page, "dt", dt)
+    wait_idle(page)
+
+
 def _bar_time(page) -> float:  # type: ignore[no-untyped-def]
     return float(page.locator(f"{NOTEBOOK} .robotconf-scene-time").first.input_value())
 
@@ -238,16 +238,10 @@ def _check_ended(page, cell: int, source: str, duration: float) -> None:  # type
 
 
 def test_a_run_and_a_program_play_to_their_end(lab: Lab, page) -> None:  # type: ignore[no-untyped-def]
-    write_notebook(lab.root / "playback.ipynb", PLAYBACK)
-    open_notebook(page, lab.url("playback.ipynb"))
-    run_cell(page, 0)
-    page.wait_for_selector("[data-robotconf-scene='ready']", timeout=60_000)
-    wait_idle(page)
+    open_panel(page, lab, "playback.ipynb", PLAYBACK)
 
     # The Motion tab: the sawtooth on q3 for 3 s, Run, animate in 3D.
-    choose(page, "signals.q3", "RepeatingSequence")
-    type_number(page, "t_end", 3)
-    wait_idle(page)
+    _sawtooth_on_q3(page, 3)
     click(page, "run")
     page.wait_for_selector(f"{NOTEBOOK} .robotconf-results-table table", timeout=60_000)
     click(page, "results.animate")
@@ -300,16 +294,9 @@ BUSY = [
     "render sets selected_index back: the page shows the Motion tab again (or an empty one)",
 )
 def test_a_tab_clicked_during_a_run_shows_and_stays(lab: Lab, page) -> None:  # type: ignore[no-untyped-def]
-    write_notebook(lab.root / "busy.ipynb", BUSY)
-    open_notebook(page, lab.url("busy.ipynb"))
-    run_cell(page, 0)
-    page.wait_for_selector("[data-robotconf-scene='ready']", timeout=60_000)
-    wait_idle(page)
+    open_panel(page, lab, "busy.ipynb", BUSY)
     # A run of 150 001 samples: a second or more of the kernel's time.
-    choose(page, "signals.q3", "RepeatingSequence")
-    type_number(page, "t_end", 300)
-    type_number(page, "dt", 0.002)
-    wait_idle(page)
+    _sawtooth_on_q3(page, 300, 0.002)
     click(page, "run")
     page.wait_for_timeout(300)
     tab = page.locator(f"{NOTEBOOK} .lm-TabBar-tab", has_text="Matrices").first
