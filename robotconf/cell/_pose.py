@@ -13,13 +13,15 @@ from typing import Any
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import as_float_array, check_vector3, one_line
-from ..kinematics import MAX_NAME_CHARS, MAX_PARAMETER, matrix_from_rpy
+from .._validation import check_vector3, one_line
+from ..kinematics import (
+    MAX_NAME_CHARS,
+    MAX_PARAMETER,
+    check_rigid_pose,
+    matrix_from_rpy,
+)
 
-__all__ = ["pose", "check_pose", "check_cell_name", "POSE_TOLERANCE", "NAME_SEPARATOR"]
-
-#: A pose's rotation must be orthonormal with det +1 within this.
-POSE_TOLERANCE = 1e-6
+__all__ = ["pose", "check_pose", "check_cell_name", "NAME_SEPARATOR"]
 
 #: Joins a frame's parent and its own name: ``"table/pick"``.
 NAME_SEPARATOR = "/"
@@ -84,27 +86,9 @@ def check_pose(value: Any, field: str) -> np.ndarray:
     """
     if value is None:
         return np.eye(4)
-    array = as_float_array(value, field, _POSE)
-    if array.shape != (4, 4):
-        raise InvalidInputError(
-            field, one_line(value), _POSE, problem=f"expected shape (4, 4), got {array.shape}:"
-        )
-    if not np.all(np.isfinite(array)):
-        raise InvalidInputError(field, one_line(array), _POSE, problem="entries must be finite:")
-    if np.max(np.abs(array[3] - (0.0, 0.0, 0.0, 1.0))) > 1e-12:
-        raise InvalidInputError(
-            field, one_line(array[3]), _POSE, problem="the last row is not [0, 0, 0, 1]:"
-        )
-    if np.max(np.abs(array[:3, 3])) > MAX_PARAMETER:
-        raise InvalidInputError(field, one_line(array[:3, 3]), _POSE, problem="too large:")
+    array = check_rigid_pose(value, field, _POSE)
     rotation = array[:3, :3]
     drift = float(np.max(np.abs(rotation.T @ rotation - np.eye(3))))
-    det = float(np.linalg.det(rotation))
-    if drift > POSE_TOLERANCE or abs(det - 1.0) > POSE_TOLERANCE:
-        what = "a reflection (det −1)" if det < 0 else f"not orthonormal (RᵀR − I ≤ {drift:.2g})"
-        raise InvalidInputError(
-            field, one_line(rotation), _POSE, problem=f"the rotation is {what}:"
-        )
     out = np.array(array, dtype=float)
     if drift > 1e-12:  # a rotation exact to round-off is kept bit for bit
         u, _, vt = np.linalg.svd(rotation)

@@ -84,6 +84,7 @@ from ._link import Link
 from ._module import Module, kind_name, transfer_matrix
 from ._names import MAX_NAME_CHARS, check_module_names, check_name
 from ._points import END_EFFECTOR_LABEL, RobotPoint, format_point, robot_points
+from ._pose_check import POSE_ALLOWED, POSE_TOLERANCE, check_rigid_pose
 from ._robot import Robot, characteristic_length
 from ._rotations import matrix_from_rpy, rotation_matrix, rotation_vector, rpy_from_matrix
 from ._snapshot import RobotSnapshot
@@ -115,6 +116,9 @@ __all__ = [
     "default_limits",
     # bounds and names (docs: robotconf.kinematics._bounds, ._names)
     "MAX_PARAMETER",
+    "POSE_TOLERANCE",
+    "POSE_ALLOWED",
+    "check_rigid_pose",
     "MAX_MODULES",
     "MAX_NAME_CHARS",
     "check_parameter",

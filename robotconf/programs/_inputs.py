@@ -26,11 +26,10 @@ import numpy as np
 from .._budget import check_finite_result
 from .._errors import InvalidInputError
 from .._validation import as_float_array, check_finite_number, one_line
-from ..kinematics import MAX_PARAMETER, check_parameter_vector
+from ..kinematics import MAX_PARAMETER, check_parameter_vector, check_rigid_pose
 from ..motion import MAX_TIME
 
 __all__ = [
-    "POSE_TOLERANCE",
     "MIN_RATE",
     "positive",
     "seconds",
@@ -50,11 +49,6 @@ _RATE_FIELDS = {"speed": "a path speed (length/s)", "accel": "a path acceleratio
 _DURATION_FIELDS = ("seconds",)
 #: Fields of a move that hold coordinates: a target, a via point, a pose, PTP's q.
 _COORDINATE_FIELDS = ("q", "pose", "position", "via", "end")
-
-#: A pose's rotation must be orthonormal with det +1 within this (as for ``rc.ik``).
-POSE_TOLERANCE = 1e-6
-
-_POSE = "a 4×4 homogeneous pose: orthonormal rotation (det +1), last row [0, 0, 0, 1]"
 
 
 def _rate_range(what: str) -> str:
@@ -135,31 +129,7 @@ def pose(value: Any, field: str) -> tuple[tuple[float, ...], ...]:
     ...
     robotconf.InvalidInputError: pose: the rotation is a reflection (det −1): ...
     """
-    array = as_float_array(value, field, _POSE)
-    if array.shape != (4, 4):
-        raise InvalidInputError(
-            field, one_line(value), _POSE, problem=f"expected shape (4, 4), got {array.shape}:"
-        )
-    if not np.all(np.isfinite(array)):
-        raise InvalidInputError(field, one_line(array), _POSE, problem="entries must be finite:")
-    if np.max(np.abs(array[:3, 3])) > MAX_PARAMETER:
-        raise InvalidInputError(
-            field,
-            tuple(array[:3, 3].tolist()),
-            f"{_POSE}, its point within |x| ≤ {MAX_PARAMETER:.0e}",
-            problem=f"the point is too large (|x| > {MAX_PARAMETER:.0e}):",
-        )
-    if np.max(np.abs(array[3] - (0.0, 0.0, 0.0, 1.0))) > 1e-12:
-        raise InvalidInputError(
-            field, one_line(array[3]), _POSE, problem="the last row is not [0, 0, 0, 1]:"
-        )
-    rotation = array[:3, :3]
-    drift = float(np.max(np.abs(rotation.T @ rotation - np.eye(3))))
-    det = float(np.linalg.det(rotation))
-    if drift > POSE_TOLERANCE or abs(det - 1.0) > POSE_TOLERANCE:
-        what = "a reflection (det −1)" if det < 0 else f"not orthonormal (RᵀR − I ≤ {drift:.2g})"
-        problem = f"the rotation is {what}:"
-        raise InvalidInputError(field, one_line(rotation), _POSE, problem=problem)
+    array = check_rigid_pose(value, field)
     return tuple(tuple(float(x) for x in row) for row in array)
 
 
