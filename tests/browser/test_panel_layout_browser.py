@@ -12,8 +12,6 @@ from __future__ import annotations
 
 import re
 
-import pytest
-
 from .conftest import Lab
 from .lab_driver import NOTEBOOK, choose, control, open_notebook, write_notebook
 from .paper_workflow import (
@@ -133,13 +131,6 @@ def test_paper_workflow_fits_and_keeps_the_robot_in_sight(lab: Lab, page) -> Non
     assert not page.errors, page.errors
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="form.js keys a control that has no key by its place in its line (row key + "
-    "'#' + index), so the texts of different lines of one row share a key and one takes "
-    "the other's element: a RepeatingSequence row shows neither its title 'q3 [deg]' nor "
-    "its table's heading 'time [s]'",
-)
 def test_a_sequence_row_keeps_its_title_and_its_table_heading(lab: Lab, page) -> None:  # type: ignore[no-untyped-def]
     write_notebook(lab.root / "titles.ipynb", [PANEL_CELL])
     open_notebook(page, lab.url("titles.ipynb"))
