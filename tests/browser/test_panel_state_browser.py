@@ -16,7 +16,6 @@ from __future__ import annotations
 
 import re
 
-import pytest
 from playwright.sync_api import expect
 
 import robotconf as rc
@@ -284,15 +283,6 @@ BUSY = [
 ]
 
 
-@pytest.mark.xfail(
-    strict=True,
-    reason="a tab clicked while the kernel handles a form's event is lost: JupyterLab sends "
-    "comm messages to a kernel subshell, and the Tab's selected_index is handled on the "
-    "kernel's main thread while the forms' events run on the subshell's thread; the click "
-    "is dropped while the other thread renders (_tab_clicked sees _rendering) or "
-    "overwritten when the other thread commits the state it computed before it, and the "
-    "render sets selected_index back: the page shows the Motion tab again (or an empty one)",
-)
 def test_a_tab_clicked_during_a_run_shows_and_stays(lab: Lab, page) -> None:  # type: ignore[no-untyped-def]
     open_panel(page, lab, "busy.ipynb", BUSY)
     # A run of 150 001 samples: a second or more of the kernel's time.
