@@ -24,7 +24,6 @@ from dataclasses import dataclass
 import numpy as np
 
 from ._box import segment_box_distance
-from ._contacts import contacts_sparingly
 from ._cylinder import segment_cylinder_distance, segment_cylinder_lower_bound
 from ._segments import point_segment_distance, segment_segment_distance
 from ._triangle import segment_triangle_distance
@@ -343,6 +342,10 @@ def capsule_obstacle_distances(
     if per_sample or not np.isfinite(margin):
         exact = obstacles.exact(flat_a[rows], flat_b[rows], r[rows], cols)
     else:
+        # Imported here: the contacts' stage takes an Obstacles, so at module level the two
+        # files would import each other.
+        from ._contacts import contacts_sparingly
+
         tolerance = 64.0 * _EPS * (1.0 + size + abs(margin))
         exact = contacts_sparingly(
             obstacles,
