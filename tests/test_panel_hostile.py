@@ -194,8 +194,11 @@ def check_page(panel: Any) -> str:
                 body = shown.strip()
                 if body.startswith("$$") and body.endswith("$$"):
                     body = body[2:-2]
-                # Every "$" inside the formula is the core's escaped "\$" (a name's dollar).
-                assert re.search(r"(?<!\\)\$", body) is None, (where, text)
+                # Inside a \text{…} the core writes its own symbols as inline math ($\alpha$,
+                # $\cdot$, $^{\mathsf T}$); every other "$" is a name's, escaped as "\$".
+                own = re.sub(r"(?<!\\)\$(\\[A-Za-z]+|\^\{\\mathsf T\})\$", "", body)
+                assert re.search(r"(?<!\\)\$", own) is None, (where, text)
+                assert "$\\alpha$ &" not in body and "$$x" not in body, (where, text)
         elif treatment == "typeset":
             for piece in (*HOSTILE, *MODULE_NAMES, ROBOT_NAME):
                 assert piece not in text, (where, text)
