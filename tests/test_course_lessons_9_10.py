@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 import robotconf as rc
+from robotconf.teaching.exercises import registered
 
 from .course_support import COURSE, exercise_cells, read_notebook, run_with_answers, solutions_path
 
@@ -248,3 +249,18 @@ def test_lab_numbers_by_hand_match_the_paper_case():
     assert np.isclose(z["mean"], -40 * (1 - np.cos(2)) / 2, rtol=1e-3)  # -28.32 mm
     backward = rc.simulate(robot, {"q3": saw}, t_end=4.0, dt=1e-3, method="backward")
     assert np.isclose(backward.velocity[2000, 3, 0], 40 * (1 - np.cos(2 * 1.999 / 2)) / 1e-3)
+
+
+def test_the_lab_asks_for_x_y_z_not_the_homogeneous_point():
+    """The paper's arm (l = 20, 30, 40 mm) at q = 0: by hand p = (l2 + l3, 0, l1) =
+    (70, 0, 20). Exercise 1 asks for [x, y, z]: [70, 0, 20, 1] has the right numbers in
+    another answer's shape, and is named as the homogeneous coordinate."""
+    exercise = registered(LAB)[0]
+    numbers = {"robot": rc.preset("paper"), "q_star": [0.0, 0.0, 0.0]}
+    assert exercise.check([70, 0, 20], numbers).ok
+    for four in ([70, 0, 20, 1], "[70, 0, 20, 1]"):
+        result = exercise.check(four, numbers)
+        assert not result.ok and result.diagnosis == "homogeneous_coordinate", result
+        assert "drop the homogeneous coordinate 1" in result.hints[0]
+    assert not exercise.accepts([70, 0, 20, 1], numbers)  # the fast rule agrees
+    assert exercise.check([70, 0, 25, 1], numbers).diagnosis != "homogeneous_coordinate"

@@ -210,6 +210,7 @@ register(
         "p_EE",
         lambda n: n["q_star"],
         shows=lambda n: "$q^* = (" + ", ".join(f"{np.degrees(a):g}°" for a in n["q_star"]) + ")$",
+        xyz=True,  # the notebook asks for [x, y, z]
     ),
     value_exercise(
         LESSON,
