@@ -295,6 +295,10 @@ def profile_slips(
     if form == "peak_speed":
         average = (np.abs(task.distance) / task.duration).reshape(right.shape)
         add("average_speed", average, HINTS["average_speed"])
+    if form == "parameters":  # the times right, the average d/T for the peak
+        partly = right.copy()
+        partly[2] = abs(float(task.distance[0])) / task.duration
+        add("average_speed", partly, HINTS["average_speed"])
     if form == "coefficients":
         tau = task.law.tau_coefficients() * task.distance[0]
         tau[0] += task.start[0]
