@@ -155,6 +155,8 @@ SLIPS = [
         "distance_not_covered",
         "covers v_peak·(t_total − t_accel) = 2.4",
     ),
+    # the triangle from the acceleration limit alone: t_a = √(d/a) = 1, T = 2, peak √(d·a) = 2
+    (TRAPEZOID, [1.0, 2.0, 2.0], {}, "one_limit", "from the acceleration limit alone"),
     # the average speed d/T = 2/2.5 for the peak, the times right
     (TRAPEZOID, [0.5, 2.5, 0.8], {}, "average_speed", "That is the average speed d/T"),
     # the trapezoid formulas on a triangle: t_a = v/a, T = d/v + v/a, v_peak = v
