@@ -1,11 +1,26 @@
-"""Held-out answers to lessons 9–12, written blind: from the student-facing notebooks, the
-demo student's numbers and the slip codes of ``robotconf course rubric``, without reading
-the diagnosis code or the other case files, and labelled before any check ran.
+"""Answers to lessons 9–12 written blind, now in-sample: from the student-facing notebooks,
+the demo student's numbers and the slip codes of ``robotconf course rubric``, without
+reading the diagnosis code or the other case files, and labelled before any check ran.
 
 Every right answer was worked out by hand from ``rc.Assignment(lesson, "demo").numbers``;
 every wrong one repeats that working with one slip made by hand (or two, or a slip the
 rubric does not list: those are labelled ``None``). A right answer is written in another
 form than the obvious one: another frame choice, text expressions, 3 or 4 digits.
+
+**History.** Measured once as held-out, before any change to the checks: of the 178
+wrong answers 82.6 % got the right primary diagnosis, 6.2 % a vague one, 11.2 % a wrong
+one, and 3 wrong answers were accepted (a homogeneous [x, y, z, 1] for lesson 10's
+[x, y, z]; q1 = 3.183 rad, a whole turn outside (−π, π], in lesson 11 ex 1 and 2); no
+right answer was refused. Per lesson: L9 85.0 %, L10 88.5 %, L11 88.1 %, L12 68.2 %.
+The checks were then fixed while looking at these cases (each fix a rule with its own
+unit test), so they are in-sample from then on: the figure after the fixes is an
+in-sample one (``python -m tests.diagnosis_corpus``), not a measure of unseen answers.
+Three labels were changed after the measure, where the checker's code fits the
+answer better than the blind label (the measure above used the blind labels):
+``ex2-min-max-order`` of lesson 10 is ``swapped_components`` (two numbers of a
+[max, min, mean] vector exchanged; ``swapped_ends`` is an interval's), and lesson 11's
+``ex1-branches-mixed`` and ``ex2-one-q1-for-both`` are ``cosine_law_sign`` (q1 and q2
+from different elbow branches; ``sign_error`` is the first joint turned the wrong way).
 """
 
 from __future__ import annotations
@@ -25,7 +40,7 @@ def _wrong(lesson: int) -> Callable[[str, int, Any, str | None], Case]:
     """The maker of lesson ``lesson``'s wrong answers: (name, exercise, answer, label)."""
 
     def make(name: str, exercise: int, answer: Any, label: str | None) -> Case:
-        return wrong(f"heldout-L{lesson}", name, f"L{lesson}.ex{exercise}", answer, label)
+        return wrong(f"L{lesson}-blind", name, f"L{lesson}.ex{exercise}", answer, label)
 
     return make
 
@@ -192,7 +207,7 @@ LESSON_10 = [
     _w10("ex2-mean-sign", 2, [0, -45, 32.492], "sign_error"),
     _w10("ex2-in-metres", 2, [0, -0.045, -0.032492], "unit_factor"),
     _w10("ex2-mean-in-degree-mode", 2, [0, -45, -0.015077], "radians_as_degrees"),
-    _w10("ex2-min-max-order", 2, [-45, 0, -32.492], "swapped_ends"),
+    _w10("ex2-min-max-order", 2, [-45, 0, -32.492], "swapped_components"),
     _w10("ex2-two-digits", 2, [0, -45, -32], "too_rounded"),
     _w10("ex2-z-not-displacement", 2, [20, -25, -12.492], None),
     _w10("ex3-no-drop", 3, [-19.041, 0, 34.722], "no_restart"),
@@ -246,7 +261,7 @@ LESSON_11 = [
     _w11("ex1-x-sign-dropped", 1, [-0.041366, 1.802], "wrong_target"),
     _w11("ex1-q1-not-wrapped", 1, [3.183, -1.802], "outside_limits"),
     _w11("ex1-two-digits", 1, [1.9, 1.8], "too_rounded"),
-    _w11("ex1-branches-mixed", 1, [1.8757, -1.802], "sign_error"),
+    _w11("ex1-branches-mixed", 1, [1.8757, -1.802], "cosine_law_sign"),
     _w11("ex1-q1-q2-swapped", 1, [1.802, 1.8757], None),
     _w11("ex1-atan-in-degrees", 1, [-72.53, 103.25], None),
     _w11("ex2-atan", 2, [[-1.2659, 1.802], [0.041366, -1.802]], "atan_quadrant"),
@@ -254,7 +269,7 @@ LESSON_11 = [
     _w11("ex2-in-degrees", 2, [[107.47, 103.25], [-177.63, -103.25]], "degrees_as_radians"),
     _w11("ex2-x-sign-dropped", 2, [[-0.041366, 1.802], [1.2659, -1.802]], "wrong_target"),
     _w11("ex2-q1-not-wrapped", 2, [[1.8757, 1.802], [3.183, -1.802]], "outside_limits"),
-    _w11("ex2-one-q1-for-both", 2, [[1.8757, 1.802], [1.8757, -1.802]], "sign_error"),
+    _w11("ex2-one-q1-for-both", 2, [[1.8757, 1.802], [1.8757, -1.802]], "cosine_law_sign"),
     _w11("ex3-from-zero", 3, [0, 2.5], "inner_radius_zero"),
     _w11("ex3-ends-swapped", 3, [2.5, 0.5], "swapped_ends"),
     _w11("ex3-l2-minus-l1", 3, [-0.5, 2.5], "sign_error"),
