@@ -3,7 +3,7 @@
 Each notebook run executes the whole exercises notebook once (``run_with_answers``), so
 the cases are grouped: the solutions as committed, the blank exercises, two runs of
 typical wrong answers, and one run of right answers written another way (the other
-elbow, text, whole turns, rounded numbers).
+elbow, text, π in a formula, rounded numbers).
 """
 
 from __future__ import annotations
@@ -15,6 +15,7 @@ import pytest
 
 import robotconf as rc
 from robotconf.inverse_kinematics import ik, ik_all
+from robotconf.teaching.exercises import registered
 
 from .course_support import COURSE, exercise_cells, run_with_answers, solutions_path
 
@@ -28,8 +29,15 @@ L1, L2 = TASK["l1"], TASK["l2"]
 TARGET = tuple(float(x) for x in TASK["target"][:2])
 Q2 = math.acos((TARGET[0] ** 2 + TARGET[1] ** 2 - L1**2 - L2**2) / (2 * L1 * L2))
 BETA = math.atan2(L2 * math.sin(Q2), L1 + L2 * math.cos(Q2))
-DOWN = (math.atan2(TARGET[1], TARGET[0]) - BETA, Q2)
-UP = (math.atan2(TARGET[1], TARGET[0]) + BETA, -Q2)
+
+
+def _wrapped(angle: float) -> float:
+    """The angle in the joint range (−π, π] the exercises ask for."""
+    return math.atan2(math.sin(angle), math.cos(angle))
+
+
+DOWN = (_wrapped(math.atan2(TARGET[1], TARGET[0]) - BETA), Q2)
+UP = (_wrapped(math.atan2(TARGET[1], TARGET[0]) + BETA), -Q2)
 LAMBDA = TASK["lam"]
 
 # variable -> (code of the answer cell, words the failure must contain)
@@ -78,7 +86,7 @@ WRONG_B = {
 RIGHT_OTHERWISE = {
     "answer_1": f'answer_1 = "[{UP[0]:.4f}, {UP[1]:.4f}]"',
     "answer_2": (
-        f'answer_2 = "[[{UP[0]:.4f}, {UP[1]:.4f}], [{DOWN[0]:.4f} + 2*pi, {DOWN[1]:.4f}]]"'
+        f'answer_2 = "[[{UP[0]:.4f}, {UP[1]:.4f}], [{DOWN[0] - math.pi:.4f} + pi, {DOWN[1]:.4f}]]"'
     ),
     "answer_3": f'answer_3 = "[{abs(L1 - L2):.3g}, {L1 + L2:.3g}]"',
     "answer_4": (
@@ -154,3 +162,24 @@ def test_typical_wrong_answers_get_the_right_hint(wrong):
 def test_right_answers_written_another_way_pass():
     errors = run_with_answers(EXERCISES, RIGHT_OTHERWISE)
     assert errors == dict.fromkeys(VARIABLES, ""), errors
+
+
+def test_an_angle_a_whole_turn_outside_the_joint_range_is_refused():
+    """Arm l1 = l2 = 1, target (−1, 0): by hand cos q2 = −1/2, the solutions are
+    (2π/3, 2π/3) and (−2π/3, −2π/3); 4π/3 for q1 is the second pose a whole turn away,
+    outside the range (−π, π] the exercises ask for."""
+    one, both = registered("11_inverse_kinematics")[:2]
+    numbers = {"arm": rc.preset("planar_2r", l1=1, l2=1), "target": np.array([-1.0, 0, 0])}
+    third = 2 * math.pi / 3
+    assert one.check([third, third], numbers).ok
+    assert one.check(f"[{-third:.4f}, {-third:.4f}]", numbers).ok
+    wrapped = one.check([2 * third, -third], numbers)
+    assert not wrapped.ok and wrapped.diagnosis == "outside_limits"
+    assert "wrap q1 into (−π, π]" in wrapped.hints[0] and "-2.094" in wrapped.hints[0]
+    assert not one.accepts([2 * third, -third], numbers)  # the fast rule agrees
+    pair = both.check([[third, third], [2 * third, -third]], numbers)
+    assert not pair.ok and pair.diagnosis == "outside_limits"
+    assert both.check([[third, third], [-third, -third]], numbers).ok
+    # π itself, rounded to 3.142 by hand, is inside: the edge keeps the rounding rule
+    edge = {"arm": rc.preset("planar_2r", l1=1, l2=1), "target": np.array([-1.0, 1, 0])}
+    assert one.check([3.142, -math.pi / 2], edge).ok

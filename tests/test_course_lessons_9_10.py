@@ -17,6 +17,7 @@ import numpy as np
 import pytest
 
 import robotconf as rc
+from robotconf.teaching.exercises import registered
 
 from .course_support import COURSE, exercise_cells, read_notebook, run_with_answers, solutions_path
 
@@ -248,3 +249,51 @@ def test_lab_numbers_by_hand_match_the_paper_case():
     assert np.isclose(z["mean"], -40 * (1 - np.cos(2)) / 2, rtol=1e-3)  # -28.32 mm
     backward = rc.simulate(robot, {"q3": saw}, t_end=4.0, dt=1e-3, method="backward")
     assert np.isclose(backward.velocity[2000, 3, 0], 40 * (1 - np.cos(2 * 1.999 / 2)) / 1e-3)
+
+
+def test_the_lab_asks_for_x_y_z_not_the_homogeneous_point():
+    """The paper's arm (l = 20, 30, 40 mm) at q = 0: by hand p = (l2 + l3, 0, l1) =
+    (70, 0, 20). Exercise 1 asks for [x, y, z]: [70, 0, 20, 1] has the right numbers in
+    another answer's shape, and is named as the homogeneous coordinate."""
+    exercise = registered(LAB)[0]
+    numbers = {"robot": rc.preset("paper"), "q_star": [0.0, 0.0, 0.0]}
+    assert exercise.check([70, 0, 20], numbers).ok
+    for four in ([70, 0, 20, 1], "[70, 0, 20, 1]"):
+        result = exercise.check(four, numbers)
+        assert not result.ok and result.diagnosis == "homogeneous_coordinate", result
+        assert "drop the homogeneous coordinate 1" in result.hints[0]
+    assert not exercise.accepts([70, 0, 20, 1], numbers)  # the fast rule agrees
+    assert exercise.check([70, 0, 25, 1], numbers).diagnosis != "homogeneous_coordinate"
+
+
+def test_the_lab_names_a_calculator_in_degree_mode_and_an_upward_displacement():
+    """The paper's arm (l3 = 40 mm), A = T = 2: by hand the z displacement's mean is
+    -40·(1 − cos 2)/2 = -28.32 mm; with the calculator in degree mode cos 2° makes it
+    -40·(1 − cos 2°)/2 = -0.01218 mm. Measured upward the statistics are [40, 0, 28.32].
+    The spike (dt = 0.1 s) in degree mode: 40·(1 − cos 1.9°)/0.1 = 0.2199 mm/s. The
+    acceleration with B = 1 rad, f = 0.25 Hz at t4 = 1 s in degree mode: q3 = sin(π/2 °)
+    = 0.02741, q3' = (π/2)·cos(π/2 °) = 1.5702, q3'' = -(π²/4)·0.02741 = -0.06763, so
+    a = 40·((−cos q3°, 0, sin q3°)·q3'² + (−sin q3°, 0, −cos q3°)·q3'') = (-98.62, 0, 2.753)."""
+    robot = rc.preset("paper")
+    numbers = {
+        "robot": robot,
+        "l3": 40.0,
+        "A": 2.0,
+        "T": 2.0,
+        "saw": rc.signals.RepeatingSequence(times=(0.0, 2.0), values=(0.0, 2.0)),
+        "B": 1.0,
+        "f4": 0.25,
+        "t4": 1.0,
+        "wave": rc.signals.Sine(amplitude=1.0, frequency=0.25),
+        "dt5": 0.1,
+    }
+    statistics, acceleration, spike = (registered(LAB)[k] for k in (1, 3, 4))
+    assert statistics.check([0, -40, -40 * (1 - np.cos(2)) / 2], numbers).ok
+    for answer, code in (
+        ([0, -40, -0.01218], "radians_as_degrees"),
+        ([40, 0, 28.32], "sign_flipped"),
+        ([-40, 0, -28.32], "swapped_components"),  # max and min exchanged
+    ):
+        assert statistics.check(answer, numbers).diagnosis == code, answer
+    assert spike.check(0.2199, numbers).diagnosis == "radians_as_degrees"
+    assert acceleration.check([-98.62, 0, 2.753], numbers).diagnosis == "radians_as_degrees"

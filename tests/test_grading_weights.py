@@ -79,5 +79,12 @@ def test_the_rubric_command_prints_a_lessons_rubric(capsys):
     assert out.startswith("# Rubric of 12_trajectories: 9 points")
     assert "| 4 | 2 | profile | 1 | per number (of several) |" in out
     assert "its typical slips `not_synchronized`" in out
+    # every code a check may give is listed: those naming no slip with their share (0)
+    trapezoid = out.split("**Exercise 1**")[1].split("\n")[0]
+    assert "naming no slip (share 0, only the right numbers count): `distance_not_covered`" in (
+        trapezoid
+    )
+    moves = out.split("**Exercise 5**")[1].split("\n")[0]
+    assert "naming no slip" in moves and "`extra`" in moves
     assert main(["course", "rubric", "13", "--course", str(COURSE)]) == 2
     assert "robotconf: error:" in capsys.readouterr().err

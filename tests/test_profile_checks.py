@@ -155,6 +155,10 @@ SLIPS = [
         "distance_not_covered",
         "covers v_peak·(t_total − t_accel) = 2.4",
     ),
+    # the triangle from the acceleration limit alone: t_a = √(d/a) = 1, T = 2, peak √(d·a) = 2
+    (TRAPEZOID, [1.0, 2.0, 2.0], {}, "one_limit", "from the acceleration limit alone"),
+    # the average speed d/T = 2/2.5 for the peak, the times right
+    (TRAPEZOID, [0.5, 2.5, 0.8], {}, "average_speed", "That is the average speed d/T"),
     # the trapezoid formulas on a triangle: t_a = v/a, T = d/v + v/a, v_peak = v
     (TRIANGLE, [0.5, 0.625, 1.0], {}, "triangle_as_trapezoid", "the profile is a triangle"),
     (TRIANGLE, [0.25, 0.5, 1.0], {}, "triangle_as_trapezoid", "the profile is a triangle"),
@@ -295,3 +299,20 @@ def test_bad_forms_and_options_are_refused():
             call()
         assert error.value.field == field
     assert set(TRAPEZOID.forms()) <= set(PROFILE_FORMS)
+
+
+def test_a_single_slip_outranks_the_distance_it_misses():
+    """d = 1, v = 0.7, a = 1.3: by hand t_a = v/a = 0.5385 s, T = d/v + v/a = 1.967 s.
+    [0.54, 2.0, 0.7] keeps two digits of T: 0.7·(2.0 − 0.54) = 1.022 ≠ 1, a distance
+    missed because of the rounding alone. Swapped times cover a negative distance."""
+    task = rc.ProfileTask(1.0, speed=0.7, accel=1.3)
+    assert np.allclose(task.expected(), [0.7 / 1.3, 1 / 0.7 + 0.7 / 1.3, 0.7])
+    rounded = rc.check_profile([0.54, 2.0, 0.7], task)
+    assert rounded.diagnosis == "too_rounded" and rounded.complete
+    assert "rounded too much" in rounded.hints[0] and "covers" in rounded.hints[1]
+    swapped = rc.check_profile([1.967, 0.5385, 0.7], task)
+    assert swapped.diagnosis == "swapped_components" and "swapped" in swapped.hints[0]
+    assert "covers v_peak·(t_total − t_accel) = -1" in swapped.hints[1]
+    # numbers no single slip explains: the distance they miss is the diagnosis
+    apart = rc.check_profile([0.5385, 1.8, 0.7], task)
+    assert apart.diagnosis == "distance_not_covered" and not apart.complete

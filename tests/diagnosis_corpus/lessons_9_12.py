@@ -209,8 +209,9 @@ def _ik() -> tuple:
 
 def _lesson_11() -> list:
     l1, l2, x, y, q2, beta = _ik()
-    down = [math.atan2(y, x) - beta, q2]
-    up = [math.atan2(y, x) + beta, -q2]
+    # each q1 wrapped into the joint range (−π, π] the exercises ask for
+    down = [math.remainder(math.atan2(y, x) - beta, math.tau), q2]
+    up = [math.remainder(math.atan2(y, x) + beta, math.tau), -q2]
     q_k, jac, err, lam = L11["q_k"], L11["J_k"], L11["e_k"], L11["lam"]
     step = np.linalg.solve(jac, err)
     damped = np.linalg.solve(jac.T @ jac + lam * np.eye(2), jac.T @ err)
@@ -222,7 +223,7 @@ def _lesson_11() -> list:
             F11, "L11.ex1-degrees", "L11.ex1", [math.degrees(v) for v in down], "degrees_as_radians"
         ),
         wrong(F11, "L11.ex1-branches-mixed", "L11.ex1", [down[0], -q2], "cosine_law_sign"),
-        right(F11, "L11.ex2-any-order", "L11.ex2", [up, [down[0] + 2 * math.pi, down[1]]]),
+        right(F11, "L11.ex2-any-order", "L11.ex2", [up, down]),
         wrong(F11, "L11.ex2-one-missing", "L11.ex2", [down], "missing"),
         right(F11, "L11.ex3-text", "L11.ex3", f"[{abs(l1 - l2)}, {l1} + {l2}]"),
         wrong(F11, "L11.ex3-inner-zero", "L11.ex3", [0, l1 + l2], "inner_radius_zero"),

@@ -25,7 +25,7 @@ from ...teaching.exercises import Assignment, registered
 from .._course import find_course, select_lessons, solutions_notebook
 from .._notebook_cells import cell_source, find_exercises, read_notebook
 from ._points import POINTS_PER_EXERCISE, POINTS_PER_MATRIX
-from ._rubric import Rubric, names_a_slip
+from ._rubric import UNEXPLAINED, Rubric, names_a_slip
 from ._weights import WEIGHTS_FILE, find_weights
 
 __all__ = ["check_kinds", "rubric_text"]
@@ -43,6 +43,8 @@ _CODES = {
     "profile": {**PROFILE_DIAGNOSES, **DIAGNOSES},
     "dh_table": DH_DIAGNOSES,
 }
+#: The codes the rubric's head already says earn nothing (no answer, wrong shape, symbols).
+_SAID = frozenset({"no_answer", "not_a_number", "too_complicated", "shape"})
 _NUMBERS = {
     "matrix": "per graded entry",
     "vector": "per component",
@@ -110,8 +112,21 @@ def _slip_list(rubric: Rubric, kind: str, typical: list[str] | None = None) -> s
     codes = [code for code in _CODES.get(kind, {}) if names_a_slip(code)]
     if typical:
         others = [code for code in codes if code not in typical]
-        return f"its typical slips {_shown(rubric, typical)}; any other: {_shown(rubric, others)}"
-    return _shown(rubric, codes)
+        listed = f"its typical slips {_shown(rubric, typical)}; any other: {_shown(rubric, others)}"
+    else:
+        listed = _shown(rubric, codes)
+    return listed + _unnamed(kind)
+
+
+def _unnamed(kind: str) -> str:
+    """The codes of this kind of check that name no slip, with the share they earn (none
+    of their own: only the right numbers count), so the listing holds every code."""
+    codes = [code for code in _CODES.get(kind, {}) if code in UNEXPLAINED - _SAID]
+    if not codes:
+        return ""
+    shown = ", ".join(f"`{code}`" for code in codes)
+    numbers = "only the right numbers count" if kind in _NUMBERS else "nothing"
+    return f"; naming no slip (share 0, {numbers}): {shown}"
 
 
 def _shown(rubric: Rubric, codes: list[str]) -> str:

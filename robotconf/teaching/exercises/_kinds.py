@@ -131,11 +131,16 @@ def matrix_exercise(
     free: Sequence[int] | None = None,
     named: Named | None = None,
     shows: Callable[[Numbers], str] | None = None,
+    xyz: bool = False,
 ) -> Exercise:
     """An exercise asking for step ``step`` (``"A2"``, ``"M3"``, ``"p_EE"``) of a robot at
     numbers: checked by :func:`~robotconf.teaching.check_matrix` against the derivation,
     its slips from :func:`matrix_slips` for the joints the exercise draws (``free``,
-    0-based; default every joint; ``[]`` when the pose is part of the task)."""
+    0-based; default every joint; ``[]`` when the pose is part of the task).
+
+    ``xyz``: the text asks for the position as ``[x, y, z]``, so the homogeneous point
+    ``[x, y, z, 1]`` — right numbers, another answer's shape — is refused as
+    ``"homogeneous_coordinate"`` (``check_matrix`` itself takes either for a point)."""
     named = per_numbers(named) if named is not None else None
 
     def answer(numbers: Numbers) -> Any:
@@ -154,6 +159,8 @@ def matrix_exercise(
             result = checkers().check_matrix(given, matrix_at(robot(numbers), step, at))
         else:
             result = checkers().check_matrix(given, reference(robot(numbers), step, at))
+        if xyz and result.ok:
+            return _refuse_homogeneous(result, given, matrix_at(robot(numbers), step, at))
         result = name_slip(result, numbers, named, equal)
         return name_slip(result, numbers, configurations, equal)
 
@@ -163,7 +170,8 @@ def matrix_exercise(
         return {k: (matrix_at(arm, step, v), hint) for k, (v, hint) in found.items()}
 
     def fast(given: Any, numbers: Numbers) -> bool:
-        return equal(np.asarray(given, dtype=float), matrix_at(robot(numbers), step, q(numbers)))
+        values, target = np.asarray(given, dtype=float), matrix_at(robot(numbers), step, q(numbers))
+        return (not xyz or values.size == target.size) and equal(values, target)
 
     def slips(numbers: Numbers) -> dict[str, Any]:
         found = matrix_slips(robot(numbers), step, q(numbers), free)
@@ -171,6 +179,20 @@ def matrix_exercise(
         return {**{k: v.tolist() for k, v in found.items()}, **mine}
 
     return Exercise(lesson, number, title, draw, answer, check, slips, shows, fast)
+
+
+def _refuse_homogeneous(result: Any, given: Any, position: np.ndarray) -> Any:
+    """``result`` refused when the accepted ``given`` is not the asked 3-vector."""
+    if checkers().check_matrix(given, position).diagnosis != "shape":
+        return result
+    hint = (
+        "The exercise asks for the position [x, y, z]: your numbers are right, but drop the "
+        "homogeneous coordinate 1 — [x, y, z, 1] is the point written for a 4×4 product."
+    )
+    codes = ("homogeneous_coordinate",)
+    return dataclasses.replace(
+        result, ok=False, hints=[hint], mistakes=list(codes), diagnoses=codes, complete=True
+    )
 
 
 def value_exercise(

@@ -42,6 +42,23 @@ EXERCISE_SLIPS.update(
 )
 
 
+#: The hint of a calculator left in degree mode (the lesson's angles are radians).
+_DEGREE_MODE = (
+    "Your calculator is in degree mode: the angles here are radians, so sin and cos take "
+    "radians — switch the calculator to RAD."
+)
+
+
+def _cos_deg(angle: Any) -> Any:
+    """cos as a calculator in degree mode computes it for a number meant as radians."""
+    return np.cos(np.radians(angle))
+
+
+def _sin_deg(angle: Any) -> Any:
+    """sin as a calculator in degree mode computes it for a number meant as radians."""
+    return np.sin(np.radians(angle))
+
+
 def _lab(variant: Any, _: Any) -> dict[str, Any]:
     l1 = variant.length("l1", 15, 30, step=5)
     l2 = variant.length("l2", 20, 40, step=5)
@@ -89,6 +106,17 @@ def _statistics_named(n: Any) -> dict[str, tuple[Any, str]]:
         "min_at_amplitude": (
             [right[0], -l3 * np.sin(amplitude), mean],
             "The minimum is where sin q3 is largest: q3 passes π/2 on the way to A > π/2.",
+        ),
+        "sign_flipped": (
+            # the statistics of +l3·sin(q3): the max is minus the min, and back
+            [-right[1], -right[0], -mean],
+            "You measured the displacement upward: the tip goes down, so its z minus its "
+            "z at t = 0 is -l3·sin(q3) ≤ 0 (the max is 0, the min and the mean negative).",
+        ),
+        "radians_as_degrees": (
+            # the mean -l3·(1 − cos A)/A; max and min take no sine or cosine
+            [right[0], right[1], -l3 * (1 - _cos_deg(amplitude)) / amplitude],
+            _DEGREE_MODE,
         ),
         "mean_angle": (
             [right[0], right[1], -l3 * np.sin(amplitude / 2)],
@@ -164,6 +192,15 @@ def _omega_as_f(n: Any) -> np.ndarray:
     )
 
 
+def _degree_mode_acceleration(n: Any) -> np.ndarray:
+    """The acceleration by hand with every sine and cosine taken in degree mode."""
+    b, omega, t, l3 = n["B"], 2 * np.pi * n["f4"], n["t4"], n["l3"]
+    q = b * _sin_deg(omega * t)
+    qd, qdd = b * omega * _cos_deg(omega * t), -b * omega**2 * _sin_deg(omega * t)
+    centripetal = np.array([-_cos_deg(q), 0, _sin_deg(q)]) * qd**2
+    return np.asarray(l3 * (centripetal + np.array([-_sin_deg(q), 0, -_cos_deg(q)]) * qdd))
+
+
 def _acceleration(n: Any) -> np.ndarray:
     run = simulate(n["robot"], {"q3": n["wave"]}, t_end=2.0, dt=1e-3)
     return np.asarray(run.acceleration[int(round(n["t4"] / 1e-3)), run.points.index("EE")])
@@ -193,6 +230,10 @@ def _scope_named(n: Any) -> dict[str, tuple[Any, str]]:
             "Just before the drop the last sample is at t = T - dt, where q3 = A·(T - dt)/T, "
             "not A: the jump is a little smaller.",
         ),
+        "radians_as_degrees": (
+            l3 * (1 - _cos_deg(amplitude * (n["T"] - dt) / n["T"])) / dt,
+            _DEGREE_MODE,
+        ),
         "not_divided_by_dt": (
             _scope(n, "backward") * dt,
             "Divide the jump by dt: (x[k] - x[k-1]) / dt is a speed in mm/s.",
@@ -210,6 +251,7 @@ register(
         "p_EE",
         lambda n: n["q_star"],
         shows=lambda n: "$q^* = (" + ", ".join(f"{np.degrees(a):g}°" for a in n["q_star"]) + ")$",
+        xyz=True,  # the notebook asks for [x, y, z]
     ),
     value_exercise(
         LESSON,
@@ -269,6 +311,7 @@ register(
                 _omega_as_f(n).tolist(),
                 "The sine's angular frequency is ω = 2πf (rad/s), not f: q3 = B sin(2πf t).",
             ),
+            "radians_as_degrees": (_degree_mode_acceleration(n).tolist(), _DEGREE_MODE),
         },
         shows=lambda n: f"$B = {n['B']:g}$ rad, $f = {n['f4']:g}$ Hz, $t_4 = {n['t4']:g}$ s",
     ),

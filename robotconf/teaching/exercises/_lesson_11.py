@@ -1,6 +1,8 @@
 """Lesson 11's exercises: inverse kinematics, now with each student's arm and targets.
 
-Any joint values that reach the target pass (the IK checks run forward kinematics). The
+Any joint values that reach the target pass (the IK checks run forward kinematics), each
+angle within the joint range (−π, π] as the exercises ask: 3.18 rad is the pose of
+3.18 − 2π = −3.10 rad, but a value the joint cannot be set to. The
 typical slips are the IK checker's own (atan for atan2, the cosine-law sign, degrees, the
 second solution lost) and the numeric steps' own, named by the checks: the step Δq
 given without q_k, the error e reversed, Jᵀe for the solve, λ² for λ, no damping, the
@@ -10,6 +12,7 @@ base, the joints counted from 0.
 
 from __future__ import annotations
 
+import dataclasses
 from typing import Any
 
 import numpy as np
@@ -18,6 +21,8 @@ from ...inverse_kinematics import ik, ik_all
 from ...kinematics import jacobian
 from ...presets import preset
 from ..ik_answers._problem import IKProblem
+from ..reading import number_text
+from ..reading._tolerance import REL_TOL
 from ._exercise import Exercise, checkers, register
 from ._kinds import EXERCISE_SLIPS, matches, name_slip, value_exercise
 
@@ -94,15 +99,22 @@ def _ik_slips(n: Any) -> dict[str, Any]:
     }
 
 
+#: The largest angle the exercises take: π with the rounding rule's margin.
+_EDGE = np.pi * (1 + REL_TOL)
+
+
 def _reaches(given: Any, n: Any) -> bool:
     q = np.asarray(given, dtype=float).reshape(-1)
-    return q.size == 2 and bool(IKProblem(n["arm"], n["target"], "position", 5e-3).reaches(q))
+    problem = IKProblem(n["arm"], n["target"], "position", 5e-3)
+    return q.size == 2 and bool(np.all(np.abs(q) <= _EDGE)) and bool(problem.reaches(q))
 
 
 def _both_fast(given: Any, n: Any) -> bool:
     rows = np.asarray(given, dtype=float).reshape(-1, 2)
     problem = IKProblem(n["arm"], n["target"], "position", 5e-3)
     solutions = _solutions(n)
+    if np.any(np.abs(rows) > _EDGE):
+        return False
     if len(rows) != len(solutions) or not problem.reaches(rows).all():
         return False
     found = {problem.closest(row, solutions)[0] for row in rows}
@@ -114,6 +126,35 @@ def _both_slips(n: Any) -> dict[str, Any]:
     found: dict[str, Any] = {"one_missing": [first], "the_same_twice": [first, first]}
     found.update({k: [first, v] for k, v in _ik_slips(n).items()})
     return found
+
+
+def _wrapped(result: Any) -> Any:
+    """``result``, refused when it reaches the target with an angle outside (−π, π].
+
+    The arm's joints turn within ±π (``arm.joint_limits()``) and the exercises ask for
+    values in that range: the same pose a whole turn away is not a value the joint takes.
+    The edge gets the rounding rule's margin (3.142 for π passes).
+    """
+    if not result.ok:
+        return result
+    rows = np.atleast_2d(np.asarray(result.student, dtype=float))
+    outside = sorted({(i, q) for row in rows for i, q in enumerate(row) if abs(q) > _EDGE})
+    if not outside:
+        return result
+    words = "; ".join(
+        f"q{i + 1} = {number_text(q)} is outside (−π, π]: wrap q{i + 1} into (−π, π] "
+        f"({'subtract' if q > 0 else 'add'} 2π: {number_text(q - np.copysign(2 * np.pi, q))})"
+        for i, q in outside
+    )
+    hint = f"{words}. It is the same pose, but the joint turns within ±π (arm.joint_limits())."
+    return dataclasses.replace(
+        result,
+        ok=False,
+        hints=[hint],
+        diagnosis="outside_limits",
+        headline=f"{result.name}: not right yet.",
+        complete=True,
+    )
 
 
 def _shows_target(n: Any) -> str:
@@ -128,13 +169,15 @@ register(
         "one IK solution by hand",
         _arm,
         lambda n: _solutions(n)[0].tolist(),
-        lambda given, n: checkers().check_ik_solution(
-            given,
-            n["arm"],
-            n["target"],
-            name="q",
-            hint="cos q2 = (r² − l1² − l2²)/(2 l1 l2), then q1 = atan2(y, x) − "
-            "atan2(l2 sin q2, l1 + l2 cos q2) with the same q2.",
+        lambda given, n: _wrapped(
+            checkers().check_ik_solution(
+                given,
+                n["arm"],
+                n["target"],
+                name="q",
+                hint="cos q2 = (r² − l1² − l2²)/(2 l1 l2), then q1 = atan2(y, x) − "
+                "atan2(l2 sin q2, l1 + l2 cos q2) with the same q2.",
+            )
         ),
         _ik_slips,
         _shows_target,
@@ -146,12 +189,14 @@ register(
         "both IK solutions",
         lambda v, earlier: {},
         lambda n: _solutions(n).tolist(),
-        lambda given, n: checkers().check_ik_solutions(
-            given,
-            n["arm"],
-            n["target"],
-            name="the two solutions",
-            hint="Check each solution with arm.end_effector(q) before you hand it in.",
+        lambda given, n: _wrapped(
+            checkers().check_ik_solutions(
+                given,
+                n["arm"],
+                n["target"],
+                name="the two solutions",
+                hint="Check each solution with arm.end_effector(q) before you hand it in.",
+            )
         ),
         lambda n: {
             "one_missing": [_solutions(n)[0].tolist()],

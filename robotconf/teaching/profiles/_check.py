@@ -22,7 +22,7 @@ import numpy as np
 from ..._errors import InvalidInputError
 from ..checks._input import NO_ANSWER, read_options
 from ..checks._numbers import finish
-from ..checks._result import AnswerCheck
+from ..checks._result import AnswerCheck, explains_all
 from ..diagnosis._components import Setting, close, explain_components, names_text
 from ..reading._parser import ParserLimits
 from ..reading._shown import number_text, sentence
@@ -137,9 +137,16 @@ def _verdict(
     wrong, hints, codes = explain_components(
         student.reshape(-1), expected.reshape(-1), setting, flat_names, entries, what
     )
+    complete = explains_all(codes)
     if found is not None:
         code, text = found
-        hints, codes = [text + right, *hints], [code, *codes]
+        if code == "distance_not_covered" and complete:
+            # one slip (times swapped, too few digits) explains every wrong number, and
+            # the distance missed follows from it: the slip leads, the distance is a note
+            hints, codes = [*hints, text + right], [*codes, code]
+        else:
+            hints, codes = [text + right, *hints], [code, *codes]
+            complete = explains_all(codes)
     if expected.ndim == 0:
         headline = f"{what}: not right yet."
     else:
@@ -157,6 +164,7 @@ def _verdict(
         wrong=wrong,
         headline=headline,
         reveal=setting.reveal,
+        complete=complete,
     )
 
 

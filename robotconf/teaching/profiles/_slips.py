@@ -40,7 +40,8 @@ PROFILE_DIAGNOSES = {
     "accel_time_factor": "the acceleration time off by a factor (2v/a or v/(2a) for v/a)",
     "ramps_forgotten": "the duration d/v, as if the speed jumped to its limit",
     "cubic_quintic_swapped": "the cubic's numbers where the quintic's are asked, or back",
-    "one_limit": "a polynomial's duration from one limit where the other one decides",
+    "one_limit": "a duration from one limit where the other one decides (a polynomial's, or "
+    "a triangle where the speed limit makes it a trapezoid)",
     "average_speed": "the average speed d/T given as the peak speed",
     "normalized_time": "polynomial coefficients in τ = t/T instead of t",
     "descending_order": "polynomial coefficients with the highest power first",
@@ -120,6 +121,11 @@ HINTS = {
         "Both limits must hold: the speed limit asks for one duration, the acceleration "
         "limit for another — the move takes the longer one."
     ),
+    "speed_limit_left_out": (
+        "That is a triangle, from the acceleration limit alone: its peak √(d·a) is above "
+        "the speed limit, so the robot reaches v_max and cruises — a trapezoid (both limits "
+        "must hold)."
+    ),
     "average_speed": (
         "That is the average speed d/T: a rest-to-rest profile starts and ends at "
         "speed 0, so its peak is higher than the average."
@@ -185,6 +191,10 @@ def _trapezoid_laws(task: ProfileTask) -> list[tuple[str, str, Law]]:
         for factor, key in ((2.0, "accel_time_long"), (0.5, "accel_time_short")):
             found.append(("accel_time_factor", key, cruise_law(V, A, blend=factor * V / A)))
         found.append(("ramps_forgotten", "ramps_forgotten", box_law(V)))
+        # the triangle's formulas, the speed limit left out: t_a = √(d/a), peak √(d·a)
+        blend = math.sqrt(1.0 / A)
+        triangle = Law("triangle", 2 * blend, blend, A * blend, A)
+        found.append(("one_limit", "speed_limit_left_out", triangle))
     return found
 
 
@@ -248,6 +258,7 @@ def profile_slips(
     accel_time_factor 3.0
     accel_time_factor 2.25
     ramps_forgotten 2.0
+    one_limit 2.0
     """
     n, right = task.n, task.expected(form, times)
     found: list[Slip] = []
@@ -295,6 +306,10 @@ def profile_slips(
     if form == "peak_speed":
         average = (np.abs(task.distance) / task.duration).reshape(right.shape)
         add("average_speed", average, HINTS["average_speed"])
+    if form == "parameters":  # the times right, the average d/T for the peak
+        partly = right.copy()
+        partly[2] = abs(float(task.distance[0])) / task.duration
+        add("average_speed", partly, HINTS["average_speed"])
     if form == "coefficients":
         tau = task.law.tau_coefficients() * task.distance[0]
         tau[0] += task.start[0]
