@@ -55,7 +55,6 @@ EXERCISE_SLIPS.update(
         "distance_only": "reach judged by the distance alone, the joint limits left aside",
         "shoulder_height_left_out": "the reach measured from the base, not from the shoulder",
         "height_left_out": "the reach laid along x, the target's height left aside",
-        "base_wrong_way": "the base moved the wrong way",
         "in_samples": "the contact's time in samples, not in seconds",
         "wait_left_out": "the time counted from the LIN's start, the wait before it left out",
         "radius_left_out": "the tip's point where its capsule (radius 3.6 mm) meets the wall",
@@ -271,11 +270,8 @@ def _base_x(n: Any, *, height: float = SHOULDER, reach: float = REACH) -> float:
 
 def _base_named(n: Any) -> dict[str, tuple[Any, str]]:
     x, _, z = n["target_3"]
+    # the base moved the wrong way is the component slip "sign_error", named by the check
     return {
-        "base_wrong_way": (
-            -_base_x(n),
-            "The base must move towards the target, not away from it.",
-        ),
         "shoulder_height_left_out": (
             _base_x(n, height=0.0),
             "The arm reaches 70 mm from its shoulder, which stands 20 mm above the base.",
