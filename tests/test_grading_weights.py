@@ -80,5 +80,5 @@ def test_the_rubric_command_prints_a_lessons_rubric(capsys):
     assert out.startswith("# Rubric of 12_trajectories: 9 points")
     assert "| 4 | 2 | profile | 1 | per number (of several) |" in out
     assert "its typical slips `not_synchronized`" in out
-    assert main(["course", "rubric", "13", "--course", str(COURSE)]) == 2
+    assert main(["course", "rubric", "14", "--course", str(COURSE)]) == 2
     assert "robotconf: error:" in capsys.readouterr().err
