@@ -27,7 +27,8 @@ from ._exercise import Assignment, Exercise, registered
 from ._kinds import EXERCISE_SLIPS
 from ._mistake_models import component_slips, configuration_slips, dh_table_slips, matrix_slips
 
-del _lesson_09, _lesson_10, _lesson_11, _lesson_12, _lesson_13, _lessons_02_08  # registered on import
+# registered on import
+del _lesson_09, _lesson_10, _lesson_11, _lesson_12, _lesson_13, _lessons_02_08
 
 __all__ = [
     "Assignment",

@@ -460,11 +460,13 @@ register(
             "marker 1 to marker 3; marker 1 is 20 mm in along both.",
         },
         named=_origin_named,
-        shows=lambda n: "| marker | nominal (mm) | measured (mm) |\n|---|---|---|\n"
-        + "".join(
-            f"| {k + 1} | ({', '.join(f'{v:g}' for v in m)}) | "
-            f"({', '.join(f'{v:.2f}' for v in p)}) |\n"
-            for k, (m, p) in enumerate(zip(n["nominal_5"], n["measured_5"], strict=True))
+        shows=lambda n: (
+            "| marker | nominal (mm) | measured (mm) |\n|---|---|---|\n"
+            + "".join(
+                f"| {k + 1} | ({', '.join(f'{v:g}' for v in m)}) | "
+                f"({', '.join(f'{v:.2f}' for v in p)}) |\n"
+                for k, (m, p) in enumerate(zip(n["nominal_5"], n["measured_5"], strict=True))
+            )
         ),
     )
 )
