@@ -31,6 +31,29 @@ NEAREST = np.sqrt(30**2 + 40**2 - 2 * 30 * 40 * np.cos(np.radians(45)))  # mm
 IDS = [f"student-{i:03d}" for i in range(0, 200, 8)]
 
 
+def _wall_cell(task) -> tuple:
+    """Exercise 4's cell and program, built as the notebook builds them."""
+    cell = rc.Cell(unit="mm")
+    cell.add(rc.Box([320, 200, 10], pose=rc.pose([0, 0, -5]), name="table"))
+    cell.add_robot("arm", rc.preset("paper"), mount="table")
+    cell.add(rc.Box([10, 40, 50], pose=rc.pose([task["wall_x"] + 5, 0, 25]), name="wall"))
+    branches = rc.ik_all(cell.robot("arm"), [task["x0_4"], 0, 20])
+    moves = [
+        rc.Wait(task["wait_4"]),
+        rc.LIN(position=[66, 0, 20], speed=task["v_4"], accel=task["a_4"]),
+    ]
+    start = branches.q[branches.within_limits][0]
+    return cell, rc.Program(cell.robot("arm"), moves, start=start)
+
+
+def _bare_cell():
+    """The arm on its table, nothing else (exercise 2's cell)."""
+    cell = rc.Cell(unit="mm")
+    cell.add(rc.Box([320, 200, 10], pose=rc.pose([0, 0, -5]), name="table"))
+    cell.add_robot("arm", rc.preset("paper"), mount="table")
+    return cell
+
+
 def _numbers(student: str) -> dict:
     """A student's drawn numbers and right answers, worked out by hand."""
     task = rc.Assignment(LESSON, student)
@@ -212,10 +235,10 @@ def test_the_answers_by_hand_agree_with_the_cell(student):
     cell.add_frame("pick", rc.pose([*task["pick_ab"], task["table_size"][2] / 2]), parent="table")
     assert np.allclose(cell.pose_of("table/pick")[:3, 3], n["answer_1"], atol=1e-9)
     # 2: reach in the lesson's cell (distance and limits decide; no hidden collision)
-    bare = rc.Cell(unit="mm")
-    bare.add(rc.Box([320, 200, 10], pose=rc.pose([0, 0, -5]), name="table"))
-    bare.add_robot("arm", rc.preset("paper"), mount="table")
-    assert np.flatnonzero(bare.reach("arm", task["targets_2"]).reachable).tolist() == n["answer_2"]
+    assert (
+        np.flatnonzero(_bare_cell().reach("arm", task["targets_2"]).reachable).tolist()
+        == (n["answer_2"])
+    )
     # 3: just outside the base position the target is out of reach, just inside within
     rail = rc.Cell(unit="mm")
     rail.add(rc.Box([400, 120, 10], pose=rc.pose([0, 0, -5]), name="rail"))
@@ -225,13 +248,24 @@ def test_the_answers_by_hand_agree_with_the_cell(student):
         rail.set_pose("arm", rc.pose([n["answer_3"] + toward * shift, 0, 0]))
         assert bool(rail.reach("arm", [task["target_3"]]).reachable[0]) is reached, shift
     # 4: cell.check's first contact is the first sample at or after the exact time
-    contact = task["cell_4"].check(task["program_4"], dt=0.01).contacts[0]
+    cell_4, program_4 = _wall_cell(task)
+    contact = cell_4.check(program_4, dt=0.01).contacts[0]
     assert (contact.other, contact.move, contact.move_kind) == ("wall", 2, "LIN")
     assert n["answer_4"] - 1e-9 <= contact.start < n["answer_4"] + 0.01 + 1e-9
     # 5: the fitted frame's origin
     fit = rc.locate_frame(task["measured_5"], task["nominal_5"])
     assert np.allclose(fit.pose[:3, 3], n["answer_5"], atol=1e-9)
     assert np.max(np.abs(fit.residuals)) < 1e-9
+
+
+def test_the_reach_rule_is_what_the_cell_finds_for_200_ids():
+    """Exercise 2's answer is the rule (distance and joint limits); no drawn target is
+    hidden by a collision, so cell.reach agrees with it for every id."""
+    cell = _bare_cell()
+    for i in range(200):
+        task = rc.Assignment(LESSON, f"student-{i:03d}")
+        found = np.flatnonzero(cell.reach("arm", task["targets_2"]).reachable).tolist()
+        assert found == task.answer(2), (i, task["targets_2"])
 
 
 def test_the_base_from_cell_place_agrees():
@@ -254,7 +288,7 @@ def test_another_student_gets_other_numbers():
 
 
 def test_a_cell_call_in_an_answer_cell_is_a_shortcut():
-    names = {"np": np, "rc": rc, "cell_4": _numbers("demo")["task"]["cell_4"]}
+    names = {"np": np, "rc": rc, "cell_4": _bare_cell()}
     assert robotconf_calls(SHORTCUTS["answer_2"], names) == ["cell_4.reach"]
     assert robotconf_calls(SHORTCUTS["answer_5"], names) == ["rc.locate_frame"]
 
