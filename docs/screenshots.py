@@ -9,20 +9,16 @@ whenever the panel changes::
 
     .venv/bin/python docs/screenshots.py
 
+(``--out FOLDER`` writes the pictures there instead, to look at them first.)
+
 Every process it starts is stopped at the end, also when a step fails.
 """
 
 from __future__ import annotations
 
 import contextlib
-import os
-import secrets
-import socket
-import subprocess
 import sys
 import tempfile
-import time
-import urllib.request
 from collections.abc import Callable, Iterator
 from io import BytesIO
 from pathlib import Path
@@ -31,7 +27,16 @@ from typing import Any
 ROOT = Path(__file__).resolve().parents[1]
 sys.path.insert(0, str(ROOT))  # the browser tests' helpers drive the same workflow
 
-from tests.browser.lab_driver import open_notebook, quiet_lab_config, write_notebook  # noqa: E402
+from tests.browser.lab_driver import (  # noqa: E402
+    CHROMIUM,
+    CHROMIUM_ARGS,
+    choose,
+    control,
+    open_notebook,
+    serve_lab,
+    wait_idle,
+    write_notebook,
+)
 from tests.browser.paper_workflow import (  # noqa: E402
     PANEL_CELL,
     SCROLL_JS,
@@ -45,75 +50,31 @@ from tests.browser.paper_workflow import (  # noqa: E402
 )
 
 OUT = ROOT / "docs" / "img"
-CHROMIUM = os.environ.get("ROBOTCONF_CHROMIUM", "/usr/bin/chromium")
 VIEWPORT, WIDE = {"width": 1280, "height": 900}, {"width": 1920, "height": 1080}
 #: Largest PNG written (bytes): the docs stay light to clone.
 MAX_BYTES = 200_000
+#: The Motion tab's Run button: the pictures of a run start there (its status beside it,
+#: the results' controls under it).
+RUN = ".rc-button.robotconf-run"
 
 
 @contextlib.contextmanager
 def jupyter_lab(root: Path) -> Iterator[str]:
     """A JupyterLab serving ``root``; yields the URL of ``panel.ipynb`` in a fresh layout."""
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        port = sock.getsockname()[1]
-    token = secrets.token_hex(16)
-    env = dict(
-        os.environ,
-        JUPYTER_CONFIG_DIR=str(root / ".jupyter-config"),
-        JUPYTER_RUNTIME_DIR=str(root / ".jupyter-runtime"),
-        JUPYTERLAB_SETTINGS_DIR=str(root / ".lab-settings"),
-        JUPYTERLAB_WORKSPACES_DIR=str(root / ".lab-workspaces"),
-        MPLBACKEND="Agg",
-    )
-    quiet_lab_config(root / ".jupyter-config")
-    command = [
-        sys.executable,
-        "-m",
-        "jupyter",
-        "lab",
-        "--no-browser",
-        "--ip=127.0.0.1",
-        f"--port={port}",
-        f"--IdentityProvider.token={token}",
-        f"--ServerApp.root_dir={root}",
-        "--LabApp.news_url=",
-        *(["--allow-root"] if os.geteuid() == 0 else []),
-    ]
-    with open(root / "lab.log", "wb") as log:
-        server = subprocess.Popen(command, cwd=root, env=env, stdout=log, stderr=log)
-        try:
-            deadline = time.monotonic() + 90
-            while True:
-                try:
-                    urllib.request.urlopen(f"http://127.0.0.1:{port}/api/status?token={token}")
-                    break
-                except OSError:
-                    if time.monotonic() > deadline or server.poll() is not None:
-                        raise RuntimeError((root / "lab.log").read_text()[-2000:]) from None
-                    time.sleep(0.3)
-            yield (
-                f"http://127.0.0.1:{port}/lab/workspaces/shots/tree/panel.ipynb?reset&token={token}"
-            )
-        finally:
-            server.terminate()  # the server shuts its kernels down on the way out
-            try:
-                server.wait(timeout=30)
-            except subprocess.TimeoutExpired:
-                server.kill()
-                server.wait()
+    with serve_lab(root) as running:
+        yield running.url("panel.ipynb")
 
 
-def save(page: Any, name: str) -> Path:
-    """The visible page as docs/img/``name``.png, in 256 colours."""
+def save(page: Any, name: str, out: Path = OUT) -> Path:
+    """The visible page as ``out``/``name``.png (default docs/img), in 256 colours."""
     from PIL import Image
 
     image = Image.open(BytesIO(page.screenshot())).convert("RGB")
     small = image.quantize(colors=256, method=Image.Quantize.MEDIANCUT, dither=Image.Dither.NONE)
-    path = OUT / f"{name}.png"
+    path = out / f"{name}.png"
     small.save(path, optimize=True)
     size = path.stat().st_size
-    print(f"{path.relative_to(ROOT)}: {size / 1000:.0f} kB")
+    print(f"{path}: {size / 1000:.0f} kB")
     if size > MAX_BYTES:
         raise RuntimeError(f"{path.name} is {size} bytes, more than {MAX_BYTES}")
     return path
@@ -142,50 +103,60 @@ def shots(page: Any) -> list[tuple[str, Callable[[], None]]]:
     """``(name, what to do before it)`` for every screenshot, in order."""
 
     def plot_all_points() -> None:
-        page.locator(".robotconf-results-point select").select_option("all points")
-        page.locator(".robotconf-results-overlay input").check()
-        page.wait_for_timeout(1500)
+        choose(page, "results.point", "all")
+        wait_idle(page)
+        control(page, "results.overlay").locator("input").click()
+        wait_idle(page)
+        page.wait_for_timeout(1000)
         wait_for_plot(page)
-        scroll_to(page, ".robotconf-results-point", margin=4)
+        scroll_to(page, RUN, margin=4)
 
     def statistics_ee() -> None:
-        page.locator(".robotconf-results-point select").select_option("EE")
+        choose(page, "results.point", "EE")
         choose_tab(page, "statistics")
-        scroll_to(page, ".robotconf-results-point", margin=4)
+        page.locator(".robotconf-results-stats table").first.wait_for(timeout=60_000)
+        scroll_to(page, RUN, margin=4)
 
     def plot_ee() -> None:
         choose_tab(page, "plot")
         wait_for_plot(page)
-        scroll_to(page, ".robotconf-results-point", margin=4)
+        scroll_to(page, RUN, margin=4)
+
+    def matrices() -> None:
+        choose_tab(page, "Matrices")
+        page.locator(".robotconf-matrices pre").first.wait_for(timeout=60_000)
+        scroll_to(page, ".robotconf-tabs")
 
     return [
         ("panel_overview", lambda: None),
-        ("panel_sticky_view", lambda: scroll_until_bottom(page, ".robotconf-module-q", 2)),
-        ("panel_dva_table", lambda: scroll_to(page, ".robotconf-results-point", margin=4)),
+        (
+            "panel_sticky_view",
+            lambda: scroll_until_bottom(page, ".rc-control.robotconf-module-q", 2),
+        ),
+        ("panel_dva_table", lambda: scroll_to(page, RUN, margin=4)),
         ("panel_dva_plot", plot_ee),
         ("panel_all_points", plot_all_points),
         ("panel_statistics", statistics_ee),
-        (
-            "panel_matrices",
-            lambda: (
-                choose_tab(page, "Matrices"),
-                scroll_to(page, ".robotconf-panel > .jupyter-widget-TabPanel"),
-            ),
-        ),
+        ("panel_matrices", matrices),
     ]
 
 
 def main() -> None:
+    import argparse
+
     from playwright.sync_api import sync_playwright
 
-    OUT.mkdir(parents=True, exist_ok=True)
+    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    parser.add_argument("--out", type=Path, default=OUT, help="folder for the PNGs")
+    out = parser.parse_args().out
+    out.mkdir(parents=True, exist_ok=True)
     with tempfile.TemporaryDirectory(prefix="robotconf-shots-") as folder:
         root = Path(folder)
         write_notebook(root / "panel.ipynb", [PANEL_CELL])
         with jupyter_lab(root) as url, sync_playwright() as playwright:
             browser = playwright.chromium.launch(
                 executable_path=CHROMIUM,
-                args=["--no-sandbox", "--disable-gpu", "--enable-unsafe-swiftshader"],
+                args=CHROMIUM_ARGS,
             )
             try:
                 page = browser.new_page(viewport=VIEWPORT)
@@ -196,18 +167,18 @@ def main() -> None:
                 steps = shots(page)
                 for name, before in steps[:2]:
                     before()
-                    save(page, name)
+                    save(page, name, out)
                 page.evaluate(SCROLL_JS, -10_000)
                 run_paper_workflow(page, "mm")
                 for name, before in steps[2:]:
                     before()
-                    save(page, name)
+                    save(page, name, out)
                 # A wide screen: the editor and the view side by side.
                 page.set_viewport_size(WIDE)
                 choose_tab(page, "Motion")
                 page.evaluate(SCROLL_JS, -10_000)
                 scroll_to(page, ".robotconf-panel", margin=0)
-                save(page, "panel_wide")
+                save(page, "panel_wide", out)
             finally:
                 browser.close()
 

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import os
 import tempfile
+import threading
 from collections.abc import Callable, Hashable
 from pathlib import Path
 from typing import Any
@@ -143,6 +144,9 @@ class CellDesigner:
         self._layout = 0
         self._tab = 0
         self._rendering = False
+        # The forms' events may run on a kernel subshell's thread and the tabs' clicks on
+        # the main one: one change at a time, in arrival order.
+        self._lock = threading.RLock()
         self.messages = Messages()
         # -- the views --------------------------------------------------------------
         self.title = widgets.HTML("<h3 style='margin:4px 0'>robotconf cell designer</h3>")
@@ -262,15 +266,18 @@ class CellDesigner:
         InvalidInputError
             The core refuses the result; the designer keeps its state.
         """
-        self._commit(action.apply(self._state), action)
+        with self._lock:
+            self._commit(action.apply(self._state), action)
 
     def undo(self) -> None:
         """Go back to the document before the last change (the cell and the programs)."""
-        self._go(self._history.undo())
+        with self._lock:
+            self._go(self._history.undo())
 
     def redo(self) -> None:
         """Bring back the document the last :meth:`undo` left."""
-        self._go(self._history.redo())
+        with self._lock:
+            self._go(self._history.redo())
 
     # -- files --------------------------------------------------------------------------
 
@@ -317,6 +324,10 @@ class CellDesigner:
     def _dispatch(self, action: Any, key: str, typed: str | None = None) -> None:
         """What a view asks for: an action (applied), a refusal (shown beside ``key``),
         or ``None`` (draw again). Nothing a student does raises out of a widget."""
+        with self._lock:
+            self._dispatch_now(action, key, typed)
+
+    def _dispatch_now(self, action: Any, key: str, typed: str | None) -> None:
         if action is None:
             self.messages.accepted(key)
             self._render()
@@ -406,8 +417,9 @@ class CellDesigner:
     def _tab_clicked(self, change: dict[str, Any]) -> None:
         if change["new"] is None:
             return
-        self._tab = int(change["new"])
-        self._render()
+        with self._lock:  # a click made while another thread works waits for it
+            self._tab = int(change["new"])
+            self._render()
 
     def _mesh_uploaded(self, change: dict[str, Any]) -> None:
         files = change["new"]

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 import dataclasses
 import os
+import threading
 from collections.abc import Callable, Hashable
 from pathlib import Path
 from typing import Any
@@ -149,6 +150,9 @@ class Configurator:
         self.feedback = Feedback()
         self.feedback.show_in(state.units)
         self._rendering = False
+        # JupyterLab may send the forms' events to a kernel subshell (another thread) while
+        # the tabs' clicks arrive on the main one: one action at a time, in arrival order.
+        self._lock = threading.RLock()
         # -- the views --------------------------------------------------------------
         self.title = widgets.HTML("<h3 style='margin:4px 0'>robotconf configurator</h3>")
         self.header = HeaderView(self._dispatch, self._can, self.undo, self.redo)
@@ -265,15 +269,18 @@ class Configurator:
         InvalidInputError
             The core refuses the result; the panel keeps its state.
         """
-        self._commit(action.apply(self._state), action)
+        with self._lock:
+            self._commit(action.apply(self._state), action)
 
     def undo(self) -> None:
         """Go back to the document before the last change (robot, signals, program)."""
-        self._go(self._history.undo())
+        with self._lock:
+            self._go(self._history.undo())
 
     def redo(self) -> None:
         """Bring back the document the last :meth:`undo` left."""
-        self._go(self._history.redo())
+        with self._lock:
+            self._go(self._history.redo())
 
     def set_robot(self, robot: Robot) -> None:
         """Show ``robot`` and make it the panel's robot (one undo step)."""
@@ -320,6 +327,10 @@ class Configurator:
     ) -> None:
         """What a view asks for: an action (applied), a refusal (shown beside ``key``), or
         ``None`` (draw again). Nothing a student does raises out of a widget callback."""
+        with self._lock:
+            self._dispatch_now(action, key, typed, quiet)
+
+    def _dispatch_now(self, action: Any, key: str, typed: str | None, quiet: bool) -> None:
         if action is None:
             self._render(self._state)
             return
@@ -430,9 +441,12 @@ class Configurator:
             self._tab_error.clear()
 
     def _tab_clicked(self, change: dict[str, Any]) -> None:
-        if self._rendering or change["new"] is None:
+        if change["new"] is None:
             return
-        self._dispatch(act.SelectTab(TABS[int(change["new"])]), "tab")
+        with self._lock:  # a click made while another thread works waits for it
+            if self._rendering:  # this thread's own render set the index: no click
+                return
+            self._dispatch_now(act.SelectTab(TABS[int(change["new"])]), "tab", None, False)
 
     # -- display ------------------------------------------------------------------------
 

@@ -14,7 +14,7 @@ from pathlib import Path
 
 import psutil
 
-from .conftest import _free_port
+from .lab_driver import free_port as _free_port
 
 APP = Path(__file__).parents[2] / "app"
 

@@ -7,59 +7,18 @@ Playwright never downloads a browser here: it launches /usr/bin/chromium (instal
 from __future__ import annotations
 
 import os
-import secrets
 import shutil
-import socket
-import subprocess
-import sys
 import time
-import urllib.request
 from collections.abc import Iterator
 from pathlib import Path
 
 import psutil
 import pytest
 
-from .lab_driver import quiet_lab_config
-
-CHROMIUM = os.environ.get("ROBOTCONF_CHROMIUM", "/usr/bin/chromium")
-CHROMIUM_ARGS = [
-    "--no-sandbox",
-    "--enable-unsafe-swiftshader",
-    "--disable-gpu",
-    "--disable-quic",
-    "--no-first-run",
-    "--disable-background-networking",
-    "--disable-component-update",
-    "--disable-sync",
-]
+from .lab_driver import CHROMIUM, CHROMIUM_ARGS, Lab, serve_lab
 
 if not Path(CHROMIUM).exists():  # pragma: no cover - CI installs it
     pytest.skip(f"no Chromium at {CHROMIUM} (bash .ci/run installs it)", allow_module_level=True)
-
-
-def _free_port() -> int:
-    with socket.socket() as sock:
-        sock.bind(("127.0.0.1", 0))
-        return int(sock.getsockname()[1])
-
-
-class Lab:
-    """A running JupyterLab: its URL, token, folder and process."""
-
-    def __init__(self, root: Path, port: int, token: str, process: subprocess.Popen) -> None:
-        self.root = root
-        self.port = port
-        self.token = token
-        self.process = process
-
-    def url(self, notebook: str) -> str:
-        # One fresh workspace per notebook: otherwise Lab restores the previous test's tabs.
-        workspace = Path(notebook).stem
-        return (
-            f"http://127.0.0.1:{self.port}/lab/workspaces/{workspace}/tree/{notebook}"
-            f"?reset&token={self.token}"
-        )
 
 
 @pytest.fixture(scope="session")
@@ -86,62 +45,14 @@ def _alive(process: psutil.Process) -> bool:
 
 @pytest.fixture(scope="session")
 def lab(tmp_path_factory: pytest.TempPathFactory, spawned: list[psutil.Process]) -> Iterator[Lab]:
-    root = tmp_path_factory.mktemp("lab")
-    port, token = _free_port(), secrets.token_hex(16)
-    env = dict(
-        os.environ,
-        JUPYTER_CONFIG_DIR=str(root / ".jupyter-config"),
-        JUPYTER_RUNTIME_DIR=str(root / ".jupyter-runtime"),
-        JUPYTERLAB_SETTINGS_DIR=str(root / ".lab-settings"),
-        JUPYTERLAB_WORKSPACES_DIR=str(root / ".lab-workspaces"),
-        MPLBACKEND="Agg",
-    )
-    quiet_lab_config(root / ".jupyter-config")
-    log = open(root / "lab.log", "wb")  # noqa: SIM115 - the server writes it until the end
-    process = subprocess.Popen(
-        [
-            sys.executable,
-            "-m",
-            "jupyter",
-            "lab",
-            "--no-browser",
-            "--ip=127.0.0.1",
-            f"--port={port}",
-            f"--IdentityProvider.token={token}",
-            f"--ServerApp.root_dir={root}",
-            "--ServerApp.open_browser=False",
-            "--LabApp.news_url=",
-            "--LabApp.extension_manager=readonly",
-            *(["--allow-root"] if os.geteuid() == 0 else []),
-        ],
-        cwd=root,
-        env=env,
-        stdout=subprocess.DEVNULL,
-        stderr=log,
-    )
-    server = psutil.Process(process.pid)
-    spawned.append(server)
-    deadline = time.monotonic() + 60
-    while True:
+    with serve_lab(tmp_path_factory.mktemp("lab")) as running:
+        server = psutil.Process(running.process.pid)
+        spawned.append(server)
         try:
-            urllib.request.urlopen(f"http://127.0.0.1:{port}/api/status?token={token}", timeout=2)
-            break
-        except OSError:
-            if time.monotonic() > deadline or process.poll() is not None:
-                raise RuntimeError((root / "lab.log").read_text()[-3000:]) from None
-            time.sleep(0.3)
-    try:
-        yield Lab(root, port, token, process)
-    finally:
-        # Kernels are the server's children: note them before asking it to stop.
-        spawned.extend(server.children(recursive=True))
-        process.terminate()
-        try:
-            process.wait(timeout=20)
-        except subprocess.TimeoutExpired:  # pragma: no cover
-            process.kill()
-            process.wait()
-        log.close()
+            yield running
+        finally:
+            # Kernels are the server's children: note them before the server stops.
+            spawned.extend(server.children(recursive=True))
 
 
 # Package scope: Playwright's sync API keeps an asyncio loop running in this thread while

@@ -20,7 +20,7 @@ from pathlib import Path
 import psutil
 import pytest
 
-from .conftest import _free_port
+from .lab_driver import free_port as _free_port
 
 ROOT = Path(__file__).parents[2]
 BUILD = ROOT / "build" / "hub"

@@ -10,7 +10,10 @@ from __future__ import annotations
 import re
 from typing import Any
 
-from .lab_driver import NOTEBOOK
+from .lab_driver import NOTEBOOK, choose, click, wait_idle
+
+#: The Motion tab's result views, a toggle of the results form (not tabs of the panel).
+RESULT_VIEWS = {"DVA table": "table", "statistics": "statistics", "plot": "plot"}
 
 #: The notebook in the visible tab (its scrolling area is inside it).
 _PANEL = NOTEBOOK.split(" ")[0]
@@ -80,17 +83,25 @@ def show_panel(page: Any) -> None:
 
 
 def choose_tab(page: Any, title: str) -> None:
-    """Click the visible tab called ``title`` (panel tabs and result tabs alike)."""
-    tab = page.locator(".jupyter-widget-TabPanel .lm-TabBar-tab").filter(
-        has_text=re.compile(f"^{re.escape(title)}$")
-    )
-    tab.first.click()
+    """Show the panel's tab called ``title``, or the Motion tab's result view of that
+    name ("DVA table", "statistics", "plot")."""
+    # A tab clicked while the kernel still works on a form's event can be lost (see
+    # test_panel_state_browser.py): a student waits for the last answer, so do we.
+    wait_idle(page)
+    if title in RESULT_VIEWS:
+        choose(page, "results.view", title)
+    else:
+        tab = page.locator(".jupyter-widget-TabPanel .lm-TabBar-tab").filter(
+            has_text=re.compile(f"^{re.escape(title)}$")
+        )
+        tab.first.click()
     page.wait_for_timeout(400)
+    wait_idle(page)
 
 
 def choose_length_unit(page: Any, length_unit: str) -> None:
     """Pick the panel's length unit in the header row."""
-    page.locator(".robotconf-length-unit select").select_option(length_unit)
+    choose(page, "length_unit", length_unit)
     page.wait_for_timeout(300)
 
 
@@ -98,9 +109,9 @@ def run_paper_workflow(page: Any, length_unit: str = "mm") -> None:
     """Lengths in ``length_unit``, the sawtooth on q3, Run; waits for the DVA table."""
     choose_length_unit(page, length_unit)
     choose_tab(page, "Motion")
-    page.locator(".robotconf-signal-kind select").nth(2).select_option("RepeatingSequence")
+    choose(page, "signals.q3", "RepeatingSequence")
     page.wait_for_timeout(300)
-    page.locator(".robotconf-run button, button.robotconf-run").first.click()
+    click(page, "run")
     page.wait_for_selector(".robotconf-results-table table", timeout=60_000)
     page.wait_for_timeout(300)
 

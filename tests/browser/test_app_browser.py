@@ -18,7 +18,7 @@ import psutil
 import pytest
 
 from .app_support import VoilaApp, external, open_app, record_requests, running_app
-from .lab_driver import SOLID_RED_PIXELS, pixels, red_centroid, red_moved
+from .lab_driver import SOLID_RED_PIXELS, pixels, red_centroid, red_moved, type_number
 
 #: Short culling for the test (the app's own is minutes): a kernel without a page goes
 #: after 3 s of silence, checked every second. Long enough that a tab closed right after
@@ -66,10 +66,7 @@ def test_student_workflow_in_the_app(voila_app: VoilaApp, page) -> None:  # type
     assert "p_EE = (70, 0, 20)" in page.locator(".robotconf-ee").inner_text()
 
     # q1 = 90° typed into module 1's q box (the number box beside its slider).
-    q1_row = page.locator(".robotconf-module-q").first.locator("xpath=..")
-    box = q1_row.locator("input[type=number]").first
-    box.fill("90")
-    box.press("Enter")
+    type_number(page, "modules[0].q", 90, scope="body")
     page.wait_for_function(
         "() => document.querySelector('.robotconf-ee').innerText.includes('p_EE = (0, 70, 20)')",
         timeout=10_000,
@@ -97,7 +94,11 @@ def test_student_workflow_in_the_app(voila_app: VoilaApp, page) -> None:  # type
     assert float(style[1].removesuffix("px")) < 24, style
     assert "p_EE" in pre.inner_text()
 
-    # No text of the app (hidden tabs included) sends the student to a cell or to code.
+    # No text of the app sends the student to a cell or to code. A tab draws its form
+    # when shown: every tab is shown once, and hidden tabs' text counts too.
+    for name in ("Reach", "Program", "Save / Load"):
+        _tab(page, name).click()
+        page.wait_for_timeout(1000)
     text = page.evaluate(TEXT_JS)
     assert "as JSON:" in text and "the CSV holds all" in text  # the app's own wording
     assert not re.search(r"\bcells?\b", text, re.IGNORECASE), text

@@ -31,7 +31,8 @@ import psutil
 import pytest
 
 from .app_support import APP, VoilaApp, open_app, running_app
-from .conftest import CHROMIUM, CHROMIUM_ARGS, _free_port
+from .lab_driver import CHROMIUM, CHROMIUM_ARGS
+from .lab_driver import free_port as _free_port
 
 #: The test's cap: two pages per client.
 CAP = 2

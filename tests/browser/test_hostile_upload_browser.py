@@ -8,12 +8,19 @@ page, so their absence after the upload means the panel escaped the names.
 
 from __future__ import annotations
 
-import re
-
 import robotconf as rc
 
 from .conftest import Lab
-from .lab_driver import NOTEBOOK, open_notebook, run_cell, wait_idle, write_notebook
+from .lab_driver import (
+    NOTEBOOK,
+    choose,
+    click,
+    control,
+    open_notebook,
+    run_cell,
+    wait_idle,
+    write_notebook,
+)
 
 IMG = '<img src=x onerror="window.__pwned=1;alert(1)">'
 SVG = '"><svg onload="window.__pwned=2;alert(2)">'
@@ -83,21 +90,19 @@ def test_hostile_upload_runs_no_handler_and_shows_the_names(lab: Lab, page) -> N
     printout = page.locator(f"{NOTEBOOK} .widget-html pre", has_text="forward kinematics").first
     printout.wait_for(timeout=30_000)
     assert f"{ROBOT_NAME}: forward kinematics" in printout.inner_text()
-    page.locator(f"{NOTEBOOK} .widget-toggle-button", has_text="LaTeX").first.click()
+    choose(page, "matrices.style", "LaTeX")
     page.locator(f"{NOTEBOOK} .widget-htmlmath mjx-container").first.wait_for(timeout=30_000)
 
     # Motion: Run, and the DVA table whose column headers are the module names.
     _tab(page, "Motion").click()
-    run = page.locator(f"{NOTEBOOK} button.widget-button", has_text=re.compile(r"^\s*Run\s*$"))
-    run.first.click()
+    click(page, "run")
     table = page.locator(f"{NOTEBOOK} .widget-html table").first
     table.wait_for(timeout=30_000)
     # The point dropdown lists the module names as text; "all points" puts them in the table.
-    points = page.locator(f"{NOTEBOOK} .widget-dropdown select", has_text="all").first
-    options = points.locator("option").all_inner_texts()
+    options = control(page, "results.point").locator("option").all_inner_texts()
     names = [MODULE_NAMES[1], DH_NAME, MODULE_NAMES[0]]  # tool end first, after EE
-    assert [o.replace("\xa0", " ") for o in options[1:4]] == names
-    points.select_option(value="all points")
+    assert options[1:4] == names
+    choose(page, "results.point", "all")
     page.locator(f"{NOTEBOOK} .widget-html thead", has_text="EE").first.wait_for()
     wait_idle(page)
     headers = table.locator("thead").inner_text()

@@ -21,7 +21,15 @@ import psutil
 import pytest
 
 from .hub_support import STUDENTS, VENV, Hub, hub_environment, log_in, running_hub
-from .lab_driver import NOTEBOOK, SOLID_RED_PIXELS, pixels, red_centroid, red_moved, run_cell
+from .lab_driver import (
+    NOTEBOOK,
+    SOLID_RED_PIXELS,
+    pixels,
+    red_centroid,
+    red_moved,
+    run_cell,
+    type_number,
+)
 
 TEACHER_VENV_EXTENSIONS = (
     Path(__file__).parents[2] / ".venv" / "share" / "jupyter" / "labextensions"
@@ -76,10 +84,7 @@ def _move_q1_to_30_degrees(page) -> None:  # type: ignore[no-untyped-def]
     count, start = red_centroid(pixels(canvas))
     assert count >= SOLID_RED_PIXELS, "no red end-effector in the 3D pane"
     np.testing.assert_allclose(_end_effector(page), [70, 0, 20])  # the paper's parking pose
-    q1_row = page.locator(".robotconf-module-q").first.locator("xpath=..")
-    box = q1_row.locator("input[type=number]").first
-    box.fill("30")
-    box.press("Enter")
+    type_number(page, "modules[0].q", 30)  # module 1's q box, beside its slider
     expected = [70 * np.cos(np.pi / 6), 70 * np.sin(np.pi / 6), 20]  # about z by 30°
     for _ in range(60):
         if np.allclose(_end_effector(page), expected, atol=0.01):

@@ -19,7 +19,19 @@ from pathlib import Path
 from playwright.sync_api import expect
 
 from .conftest import Lab
-from .lab_driver import NOTEBOOK, open_notebook, pixels, run_cell, solid_red, write_notebook
+from .lab_driver import (
+    NOTEBOOK,
+    choose,
+    click,
+    control,
+    open_notebook,
+    pixels,
+    run_cell,
+    shown_value,
+    solid_red,
+    type_number,
+    write_notebook,
+)
 
 CELLS = [
     "import robotconf as rc\n"
@@ -35,17 +47,15 @@ def _in_panel(page, css_class: str):  # type: ignore[no-untyped-def]
     return page.locator(f"{NOTEBOOK} .{css_class}")
 
 
-def _type(box, value: float) -> None:  # type: ignore[no-untyped-def]
-    """Type ``value`` into a number box; Enter sends it to the kernel."""
-    field = box.locator("input")
-    field.fill(f"{value:g}")
-    field.press("Enter")
-
-
 def _kinds(page) -> list[str]:  # type: ignore[no-untyped-def]
-    selects = _in_panel(page, "robotconf-module-kind").locator("select")
-    shown = [s.evaluate("e => e.options[e.selectedIndex].text") for s in selects.all()]
-    return [text.replace("\xa0", " ") for text in shown]  # ipywidgets shows spaces as nbsp
+    """The module list's types as shown, module by module."""
+    rows = page.locator(f"{NOTEBOOK} .robotconf-editor .rc-row.robotconf-module-row")
+    return [shown_value(page, f"modules[{i}].kind") for i in range(rows.count())]
+
+
+def _offsets(page, index: int) -> list[str]:  # type: ignore[no-untyped-def]
+    """Module ``index``'s offset boxes (ax, ay, az) as shown."""
+    return [shown_value(page, f"modules[{index}].{name}") for name in ("ax", "ay", "az")]
 
 
 def _red_end_effector(page, canvas) -> int:  # type: ignore[no-untyped-def]
@@ -68,7 +78,7 @@ def _answer_step(page, step: int, question: str) -> None:  # type: ignore[no-unt
 
 
 def _next(page) -> None:  # type: ignore[no-untyped-def]
-    _in_panel(page, "robotconf-wizard-next").click()
+    click(page, "wizard.next")
 
 
 def _module(page, index: int, kind: str, offsets: tuple[float, float, float]) -> None:  # type: ignore[no-untyped-def]
@@ -77,22 +87,21 @@ def _module(page, index: int, kind: str, offsets: tuple[float, float, float]) ->
     number = index + 1
     _answer_step(page, first, f"Module {number}: which movement?")
     labels = {"Rz": "3 Rz", "Ry": "2 Ry"}
-    _in_panel(page, "robotconf-wizard-kind").locator("select").select_option(label=labels[kind])
+    choose(page, f"wizard.modules[{index}].kind", labels[kind])
     axis = kind[1]
     _answer_step(page, first, f"the module's own {axis} axis")
     _next(page)
     _answer_step(page, first + 1, f"Module {number} ({kind}): where is its frame origin")
-    boxes = _in_panel(page, "robotconf-wizard-offset")
-    expect(boxes).to_have_count(3, timeout=WAIT)
-    for i, value in enumerate(offsets):
-        _type(boxes.nth(i), value)
+    expect(_in_panel(page, "rc-control.robotconf-wizard-offset")).to_have_count(3, timeout=WAIT)
+    for name, value in zip(("ax", "ay", "az"), offsets, strict=True):
+        type_number(page, f"wizard.modules[{index}].{name}", value)
     # The numeric A_i follows the boxes: its last column is the typed offsets.
     preview = _in_panel(page, "robotconf-wizard-preview")
     for value in offsets:
         expect(preview).to_contain_text(f"{value:g} ]", timeout=WAIT)
     _next(page)
     _answer_step(page, first + 2, f"Module {number} ({kind}): its coordinate q")
-    _type(_in_panel(page, "robotconf-wizard-q"), 0.0)
+    type_number(page, f"wizard.modules[{index}].q", 0.0)
     expect(preview).to_contain_text(f"A_{number} at q{number} = 0°", timeout=WAIT)
     _next(page)
 
@@ -122,31 +131,30 @@ def test_the_papers_robot_through_the_wizard_and_a_delete_undone(lab: Lab, page)
     canvas = page.locator(f"{NOTEBOOK} [data-robotconf-scene] canvas").first
 
     # -- the paper's questionnaire, clicked through ---------------------------------------
-    page.locator(f"{NOTEBOOK} .widget-toggle-button", has_text="Guided").first.click()
+    choose(page, "mode", "Guided")
     _answer_step(page, 1, "How many modules")
-    _type(_in_panel(page, "robotconf-wizard-count"), 3)
+    type_number(page, "wizard.count", 3)
     _next(page)
     _module(page, 0, "Rz", (0, 0, 0))
     _module(page, 1, "Ry", (0, 0, 20))
     _module(page, 2, "Ry", (30, 0, 0))
     _answer_step(page, STEPS - 1, "The end-effector point P")
-    point = _in_panel(page, "robotconf-wizard-point")
-    expect(point).to_have_count(3, timeout=WAIT)
-    for i, value in enumerate((40, 0, 0)):
-        _type(point.nth(i), value)
+    expect(_in_panel(page, "rc-control.robotconf-wizard-point")).to_have_count(3, timeout=WAIT)
+    for name, value in zip(("Px", "Py", "Pz"), (40, 0, 0), strict=True):
+        type_number(page, f"wizard.end_effector.{name}", value)
     _next(page)  # at once, as a student would: the summary shows whether Px arrived first
     _answer_step(page, STEPS, "The robot you described")
     summary = _in_panel(page, "robotconf-wizard-summary")
     expect(summary).to_contain_text("p_EE = (70, 0, 20)", timeout=WAIT)
-    finish = _in_panel(page, "robotconf-wizard-next")
+    finish = control(page, "wizard.next")
     expect(finish).to_have_text("Finish")
     if shots := os.environ.get("ROBOTCONF_BROWSER_SHOTS"):
         _shoot_below_the_view(page, Path(shots) / "wizard_summary.png")
-    finish.click()
+    click(page, "wizard.next")
 
     # The list editor shows the robot, the panel its p_EE and the scene its end-effector.
     expect(ee).to_contain_text("p_EE = (70, 0, 20)", timeout=WAIT)
-    rows = _in_panel(page, "robotconf-module-kind")
+    rows = _in_panel(page, "rc-row.robotconf-module-row")
     expect(rows).to_have_count(3, timeout=WAIT)
     assert _kinds(page) == ["3 Rz", "2 Ry", "2 Ry"]
     # The wizard's preview grew the robot a module at a time, and the scene reframes only
@@ -158,18 +166,16 @@ def test_the_papers_robot_through_the_wizard_and_a_delete_undone(lab: Lab, page)
         page.screenshot(path=str(Path(shots) / "finished.png"))
 
     # -- module 2 deleted with its trash button, and undone --------------------------------
-    offsets = _in_panel(page, "robotconf-module-offset").locator("input")
-    assert [offsets.nth(i).input_value() for i in (3, 4, 5)] == ["0", "0", "20"]
-    _in_panel(page, "robotconf-module-delete").nth(1).click()
+    assert _offsets(page, 1) == ["0", "0", "20"]
+    click(page, "modules[1].delete")
     expect(ee).to_contain_text("p_EE = (70, 0, 0)", timeout=WAIT)  # l1 = 20 went with it
     expect(rows).to_have_count(2, timeout=WAIT)
     assert _kinds(page) == ["3 Rz", "2 Ry"]
-    _in_panel(page, "robotconf-undo").click()
+    click(page, "undo")
     expect(ee).to_contain_text("p_EE = (70, 0, 20)", timeout=WAIT)
     expect(rows).to_have_count(3, timeout=WAIT)
     assert _kinds(page) == ["3 Rz", "2 Ry", "2 Ry"]
-    expect(offsets).to_have_count(9, timeout=WAIT)
-    assert [offsets.nth(i).input_value() for i in (3, 4, 5)] == ["0", "0", "20"]
-    assert [offsets.nth(i).input_value() for i in (6, 7, 8)] == ["30", "0", "0"]
+    assert _offsets(page, 1) == ["0", "0", "20"]
+    assert _offsets(page, 2) == ["30", "0", "0"]
     assert not page.errors, page.errors
     assert time.monotonic() - started < 60

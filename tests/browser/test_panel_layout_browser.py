@@ -13,7 +13,7 @@ from __future__ import annotations
 import re
 
 from .conftest import Lab
-from .lab_driver import open_notebook, write_notebook
+from .lab_driver import NOTEBOOK, choose, control, open_notebook, write_notebook
 from .paper_workflow import (
     PANEL_CELL,
     SCROLL_JS,
@@ -27,7 +27,8 @@ from .paper_workflow import (
     wait_for_plot,
 )
 
-SLIDER = ".robotconf-module-q"
+#: The q controls of the module list (module 3's is the last).
+SLIDER = ".rc-control.robotconf-module-q"
 
 
 def _inside(inner: list[float], outer: list[float], tolerance: float = 1.0) -> bool:
@@ -58,7 +59,7 @@ def _view_and_slider_in_sight(page) -> str:  # type: ignore[no-untyped-def]
     assert slider is not None and scroller is not None and view is not None and canvas
     assert _inside(slider, scroller), (slider, scroller)
     assert _inside(canvas, scroller), ("3D view out of sight", canvas, scroller)
-    assert on_top(page, f"{SLIDER} .noUi-handle", 2), "the view covers the q3 slider"
+    assert on_top(page, f"{SLIDER} input.rc-slider", 2), "the view covers the q3 slider"
     if view[0] >= slider[2] - 1:
         return "beside"
     assert abs(view[1] - scroller[1]) <= 2, ("the view does not stick", view, scroller)
@@ -113,12 +114,12 @@ def test_paper_workflow_fits_and_keeps_the_robot_in_sight(lab: Lab, page) -> Non
     matrices = page.locator(".robotconf-matrices-tab")
     assert re.search(r"\bA3\b", matrices.inner_text()) and "A4" not in matrices.inner_text()
     controls = [
-        *matrices.locator(".widget-toggle-buttons button").all(),
-        *matrices.locator(".widget-checkbox input").all(),
+        *matrices.locator(".rc-toggle button.rc-choice").all(),
+        *matrices.locator(".rc-check input").all(),
     ]
     assert len(controls) == 4
-    for control in controls:
-        box = control.bounding_box()
+    for shown in controls:
+        box = shown.bounding_box()
         assert box is not None and box["width"] > 0 and box["height"] > 0
 
     # 1920 × 1080: the view beside the editor, the results still whole.
@@ -128,3 +129,16 @@ def test_paper_workflow_fits_and_keeps_the_robot_in_sight(lab: Lab, page) -> Non
     assert _view_and_slider_in_sight(page) == "beside"
     _results_fit(page)
     assert not page.errors, page.errors
+
+
+def test_a_sequence_row_keeps_its_title_and_its_table_heading(lab: Lab, page) -> None:  # type: ignore[no-untyped-def]
+    write_notebook(lab.root / "titles.ipynb", [PANEL_CELL])
+    open_notebook(page, lab.url("titles.ipynb"))
+    dismiss_news(page)
+    show_panel(page)
+    choose(page, "signals.q3", "RepeatingSequence")
+    control(page, "signals.q3.table.t1").wait_for(timeout=30_000)
+    page.wait_for_timeout(500)
+    lines = page.locator(f'{NOTEBOOK} .rc-row[data-key="signals.q3.row"] .rc-line')
+    assert lines.nth(0).inner_text().startswith("q3 [deg]"), lines.all_inner_texts()
+    assert re.sub(r"\s+", " ", lines.nth(1).inner_text()) == "time [s] value [deg]"

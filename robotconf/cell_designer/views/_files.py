@@ -20,7 +20,6 @@ from ...cell import MAX_MESH_BYTES, Mesh
 from ...panel.files import data_uri, file_stem
 from ...panel.form import Form, FormEvent, button, field, link, message, row, text
 from ..state import DesignerState
-from ._rows import keyed
 
 __all__ = ["FilesView", "mesh_from_upload", "MESH_TYPES"]
 
@@ -113,47 +112,44 @@ class FilesView:
         self._state = state
         name = self.filename or f"{self._stem()}.json"
         self.form.show(
-            keyed(
-                [
-                    row(
-                        "save",
-                        [
-                            text(
-                                "The cell with its programs, as a cell file "
-                                "(rc.load_cell reads it):",
-                                tone="title",
-                            )
-                        ],
-                        [
-                            field("save.name", name, label="file name", width="200px", rev=rev),
-                            button(
-                                "save.make", "cell file (download)", css_class="robotconf-cell-save"
-                            ),
-                            *self._link("save", state),
-                        ],
-                        note=message(messages.text("save")),
-                    ),
-                    row(
-                        "scene",
-                        [
-                            text(
-                                "The 3D view as one HTML page that opens offline "
-                                "(the last run animated):",
-                                tone="title",
-                            )
-                        ],
-                        [
-                            button(
-                                "scene.make",
-                                "3D scene (HTML)",
-                                css_class="robotconf-cell-scene-html",
-                            ),
-                            *self._link("scene", state),
-                        ],
-                        note=message(messages.text("scene")),
-                    ),
-                ]
-            )
+            [
+                row(
+                    "save",
+                    [
+                        text(
+                            "The cell with its programs, as a cell file (rc.load_cell reads it):",
+                            tone="title",
+                        )
+                    ],
+                    [
+                        field("save.name", name, label="file name", width="200px", rev=rev),
+                        button(
+                            "save.make", "cell file (download)", css_class="robotconf-cell-save"
+                        ),
+                        *self._link("save", state),
+                    ],
+                    note=message(messages.text("save")),
+                ),
+                row(
+                    "scene",
+                    [
+                        text(
+                            "The 3D view as one HTML page that opens offline "
+                            "(the last run animated):",
+                            tone="title",
+                        )
+                    ],
+                    [
+                        button(
+                            "scene.make",
+                            "3D scene (HTML)",
+                            css_class="robotconf-cell-scene-html",
+                        ),
+                        *self._link("scene", state),
+                    ],
+                    note=message(messages.text("scene")),
+                ),
+            ]
         )
 
     def _link(self, key: str, state: DesignerState) -> list[dict[str, Any]]:

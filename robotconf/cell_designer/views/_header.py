@@ -13,7 +13,6 @@ from ...panel.state import LENGTH_UNITS
 from .. import actions as act
 from ..state import DesignerState
 from ._messages import Messages
-from ._rows import keyed
 
 __all__ = ["HeaderView"]
 
@@ -51,54 +50,52 @@ class HeaderView:
         units = list(LENGTH_UNITS) + ([unit] if unit not in LENGTH_UNITS else [])
         notes = [messages.text(k) for k in ("undo", "length_unit", "angle_unit", "capsules")]
         self.form.show(
-            keyed(
-                [
-                    row(
-                        "header",
-                        [
-                            button(
-                                "undo",
-                                "↶",
-                                title="undo",
-                                disabled=not can_undo,
-                                css_class="robotconf-undo",
-                            ),
-                            button(
-                                "redo",
-                                "↷",
-                                title="redo",
-                                disabled=not can_redo,
-                                css_class="robotconf-redo",
-                            ),
-                            toggle(
-                                "angle_unit",
-                                state.degrees,
-                                _ANGLES,
-                                rev=rev,
-                                css_class="robotconf-angle-unit",
-                            ),
-                            select(
-                                "length_unit",
-                                unit,
-                                [(u, u) for u in units],
-                                label="length",
-                                rev=rev,
-                                width="80px",
-                                title="the cell's length unit: a name, no number changes",
-                            ),
-                            check(
-                                "capsules",
-                                state.capsules,
-                                "link capsules",
-                                title="what collisions are checked with",
-                                rev=rev,
-                            ),
-                            text(_counts(state), tone="note"),
-                        ],
-                        note=message("; ".join(n for n in notes if n)),
-                    )
-                ]
-            )
+            [
+                row(
+                    "header",
+                    [
+                        button(
+                            "undo",
+                            "↶",
+                            title="undo",
+                            disabled=not can_undo,
+                            css_class="robotconf-undo",
+                        ),
+                        button(
+                            "redo",
+                            "↷",
+                            title="redo",
+                            disabled=not can_redo,
+                            css_class="robotconf-redo",
+                        ),
+                        toggle(
+                            "angle_unit",
+                            state.degrees,
+                            _ANGLES,
+                            rev=rev,
+                            css_class="robotconf-angle-unit",
+                        ),
+                        select(
+                            "length_unit",
+                            unit,
+                            [(u, u) for u in units],
+                            label="length",
+                            rev=rev,
+                            width="80px",
+                            title="the cell's length unit: a name, no number changes",
+                        ),
+                        check(
+                            "capsules",
+                            state.capsules,
+                            "link capsules",
+                            title="what collisions are checked with",
+                            rev=rev,
+                        ),
+                        text(_counts(state), tone="note"),
+                    ],
+                    note=message("; ".join(n for n in notes if n)),
+                )
+            ]
         )
 
     def _event(self, event: FormEvent) -> None:

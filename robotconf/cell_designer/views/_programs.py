@@ -22,7 +22,7 @@ from ._boxes import ANGLE, LENGTH, box, core_value
 from ._messages import Messages
 from ._moves import MOVE_CLASS, move_controls
 from ._results import move_notes, run_lines
-from ._rows import keyed, parse_key
+from ._rows import parse_key
 
 __all__ = ["ProgramsView"]
 
@@ -83,7 +83,7 @@ class ProgramsView:
                 note=message("; ".join(n for n in notes if n)),
             )
         )
-        self.form.show(keyed(rows))
+        self.form.show(rows)
 
     def _robot_rows(
         self,

@@ -17,7 +17,6 @@ from .. import actions as act
 from ..state import DesignerState
 from ._boxes import LENGTH, box, core_value
 from ._messages import Messages
-from ._rows import keyed
 
 __all__ = ["ReachView", "reach_summary"]
 
@@ -61,14 +60,12 @@ class ReachView:
         robots = state.cell.robots
         if not robots:
             self.form.show(
-                keyed(
-                    [
-                        row(
-                            "reach",
-                            [text("Add a robot first: the map shows its reach.", tone="note")],
-                        )
-                    ]
-                )
+                [
+                    row(
+                        "reach",
+                        [text("Add a robot first: the map shows its reach.", tone="note")],
+                    )
+                ]
             )
             return
         robot, low, high, grid = act.reach_region(state, state.reach)
@@ -92,65 +89,63 @@ class ReachView:
         notes = [messages.text(k) for k in _KEYS]
         notes += [messages.text(f"reach.{c}{k}") for c in ("low", "high") for k in range(3)]
         self.form.show(
-            keyed(
-                [
-                    row(
-                        "reach",
-                        [
-                            check(
-                                "reach.on",
-                                state.reach.on,
-                                "reach map",
-                                rev=rev,
-                                css_class="robotconf-reach-on",
-                            ),
-                            select(
-                                "reach.robot",
-                                robot,
-                                [(r, r) for r in robots],
-                                label="robot",
-                                rev=rev,
-                                width="120px",
-                            ),
-                            button(
-                                "reach.update",
-                                "update",
-                                title="compute the map again for the cell as it is",
-                                rev=rev,
-                            ),
-                        ],
-                        [text(f"low corner [{units.length}]", tone="note"), *corner("low", low)],
-                        [text(f"high corner [{units.length}]", tone="note"), *corner("high", high)],
-                        [
-                            text(f"step [{units.length}]", tone="note"),
-                            box(
-                                "reach.step",
-                                grid,
-                                LENGTH,
-                                units,
-                                messages,
-                                rev,
-                                step=step,
-                                title="voxel size",
-                            ),
-                            text(
-                                f"{act.voxel_count(low, high, grid)} voxels "
-                                f"(at most {act.MAX_DESIGNER_VOXELS})",
-                                tone="note",
-                            ),
-                        ],
-                        [
-                            text(
-                                summary,
-                                tone=tone,
-                                key="reach.summary",
-                                css_class="robotconf-reach-summary",
-                            )
-                        ],
-                        note=message("; ".join(n for n in notes if n)),
-                    )
-                ]
-            )
+            [
+                row(
+                    "reach",
+                    [
+                        check(
+                            "reach.on",
+                            state.reach.on,
+                            "reach map",
+                            rev=rev,
+                            css_class="robotconf-reach-on",
+                        ),
+                        select(
+                            "reach.robot",
+                            robot,
+                            [(r, r) for r in robots],
+                            label="robot",
+                            rev=rev,
+                            width="120px",
+                        ),
+                        button(
+                            "reach.update",
+                            "update",
+                            title="compute the map again for the cell as it is",
+                            rev=rev,
+                        ),
+                    ],
+                    [text(f"low corner [{units.length}]", tone="note"), *corner("low", low)],
+                    [text(f"high corner [{units.length}]", tone="note"), *corner("high", high)],
+                    [
+                        text(f"step [{units.length}]", tone="note"),
+                        box(
+                            "reach.step",
+                            grid,
+                            LENGTH,
+                            units,
+                            messages,
+                            rev,
+                            step=step,
+                            title="voxel size",
+                        ),
+                        text(
+                            f"{act.voxel_count(low, high, grid)} voxels "
+                            f"(at most {act.MAX_DESIGNER_VOXELS})",
+                            tone="note",
+                        ),
+                    ],
+                    [
+                        text(
+                            summary,
+                            tone=tone,
+                            key="reach.summary",
+                            css_class="robotconf-reach-summary",
+                        )
+                    ],
+                    note=message("; ".join(n for n in notes if n)),
+                )
+            ]
         )
 
     def _event(self, event: FormEvent) -> None:

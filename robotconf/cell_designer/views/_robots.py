@@ -17,7 +17,7 @@ from .. import actions as act
 from ..state import POSE_FIELDS, DesignerState, RobotItem
 from ._boxes import ANGLE, LENGTH, box, core_value, pose_boxes
 from ._messages import Messages
-from ._rows import CELL_PARENT, SELECTED_CLASS, head_controls, keyed, parse_key
+from ._rows import CELL_PARENT, SELECTED_CLASS, head_controls, parse_key
 
 __all__ = ["RobotsView"]
 
@@ -108,7 +108,7 @@ class RobotsView:
                 note=message(messages.text("add.robot")),
             )
         )
-        self.form.show(keyed(rows))
+        self.form.show(rows)
 
     def _event(self, event: FormEvent) -> None:
         key = event.key

@@ -21,7 +21,6 @@ __all__ = [
     "parse_key",
     "parent_choices",
     "head_controls",
-    "keyed",
     "SELECTED_CLASS",
 ]
 
@@ -97,26 +96,3 @@ def head_controls(
 def _note(messages: Messages, key: str) -> dict[str, str] | None:
     text = messages.text(key)
     return {"text": text, "tone": "error"} if text else None
-
-
-def keyed(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
-    """``rows`` with a key on every control that has none (a label, a note).
-
-    The page keeps each control's element by its key, and names a control without one by
-    its row and its place in its line: two lines of one row would then share a name, and
-    the second line would take the first one's label away. A key per line and place
-    keeps each where it is.
-
-    >>> from robotconf.panel.form import row, text
-    >>> shown = keyed([row("r", [text("a")], [text("b")])])
-    >>> [line[0]["key"] for line in shown[0]["lines"]]
-    ['r#0.0', 'r#1.0']
-    """
-    done = []
-    for r in rows:
-        lines = [
-            [c if c.get("key") else {**c, "key": f"{r['key']}#{n}.{i}"} for i, c in enumerate(line)]
-            for n, line in enumerate(r["lines"])
-        ]
-        done.append({**r, "lines": lines})
-    return done

@@ -19,7 +19,7 @@ from .. import actions as act
 from ..state import POSE_FIELDS, DesignerState, FrameItem, Item, ObjectItem
 from ._boxes import ANGLE, LENGTH, box, core_value, pose_boxes
 from ._messages import Messages
-from ._rows import CELL_PARENT, SELECTED_CLASS, head_controls, keyed, parse_key
+from ._rows import CELL_PARENT, SELECTED_CLASS, head_controls, parse_key
 
 __all__ = ["TableView"]
 
@@ -112,7 +112,7 @@ class TableView:
                 note=message(messages.text("add")),
             )
         )
-        self.form.show(keyed(rows))
+        self.form.show(rows)
 
     def _row(
         self, i: int, item: Item, state: DesignerState, messages: Messages, rev: str, step: float

@@ -166,15 +166,8 @@ class MatricesView:
                             disabled=not fits or not view.symbolic,
                         ),
                     ],
-                    [text(note, tone="note")]
-                    if note
-                    else [
-                        text(
-                            f"at {q_text(robot, state.units)}",
-                            tone="note",
-                            css_class="robotconf-matrices-at",
-                        )
-                    ],
+                    # The printout says "at q = …" itself (in the panel's units).
+                    [text(note, tone="note")] if note else [],
                     note=message(feedback.message("matrices")),
                 )
             ]

@@ -90,8 +90,11 @@ const NAVIGATION_KEYS = new Set([
   "PageDown",
 ]);
 
-function controlKey(spec, row, index) {
-  return spec.key || row.key + "#" + index;
+// A control without a key of its own (a label, a note) is named by its row, its line and
+// its place in the line: named by row and place alone, two lines of one row would share a
+// name, and the second line would take the first one's element away.
+function controlKey(spec, row, line, index) {
+  return spec.key || row.key + "#" + line + "." + index;
 }
 
 function shapeOf(rows) {
@@ -99,7 +102,7 @@ function shapeOf(rows) {
     (rows || []).map((row) => [
       row.key,
       row.class || "",
-      (row.lines || []).map((line) => line.map((c, i) => [controlKey(c, row, i), c.type])),
+      (row.lines || []).map((line, n) => line.map((c, i) => [controlKey(c, row, n, i), c.type])),
     ])
   );
 }
@@ -133,10 +136,10 @@ function render({ model, el }) {
         const rowEl = make("div", "rc-row" + (row.class ? " " + row.class : ""), root);
         rowEl.dataset.key = row.key;
         if (row.box) rowEl.classList.add("rc-boxed");
-        for (const line of row.lines || []) {
+        (row.lines || []).forEach((line, n) => {
           const lineEl = make("div", "rc-line", rowEl);
           line.forEach((control, i) => {
-            const key = controlKey(control, row, i);
+            const key = controlKey(control, row, n, i);
             let view = views.get(key);
             if (!view || view.constructor !== VIEWS[control.type]) {
               view = new VIEWS[control.type](control, sender);
@@ -146,7 +149,7 @@ function render({ model, el }) {
             kept.set(key, view);
             lineEl.appendChild(view.el);
           });
-        }
+        });
         const message = make("div", "rc-row-message", rowEl);
         rowMessages.set(row.key, message);
         showMessage(message, row.message);
@@ -156,9 +159,9 @@ function render({ model, el }) {
       return;
     }
     for (const row of rows) {
-      (row.lines || []).forEach((line) =>
+      (row.lines || []).forEach((line, n) =>
         line.forEach((control, i) => {
-          const view = views.get(controlKey(control, row, i));
+          const view = views.get(controlKey(control, row, n, i));
           if (view) view.render(control);
         })
       );
