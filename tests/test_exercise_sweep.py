@@ -46,6 +46,7 @@ def test_every_lesson_with_drawn_numbers_is_registered():
         "10_paper_lab",
         "11_inverse_kinematics",
         "12_trajectories",
+        "13_work_cell",
     ]
     for lesson in LESSONS:
         task = rc.Assignment(lesson, "demo")

@@ -21,7 +21,7 @@ def test_every_exercise_of_the_course_has_its_points():
         notebook = read_notebook(solutions_path(lesson / "exercises.ipynb"))
         found |= {(number, str(e.number)) for e in find_exercises(notebook)}
     assert listed == found
-    assert sum(WEIGHTS.points.values()) == 104
+    assert sum(WEIGHTS.points.values()) == 113
 
 
 def test_lesson_points_follow_the_time_per_lesson():
@@ -30,6 +30,7 @@ def test_lesson_points_follow_the_time_per_lesson():
     for (lesson, _), points in WEIGHTS.points.items():
         per_lesson[lesson] = per_lesson.get(lesson, 0) + points
     assert per_lesson["9"] == 9 and per_lesson["5"] == 9 and per_lesson["10"] == 12
+    assert per_lesson["13"] == 9
 
 
 def _table(tmp_path, text: str):
@@ -86,5 +87,5 @@ def test_the_rubric_command_prints_a_lessons_rubric(capsys):
     )
     moves = out.split("**Exercise 5**")[1].split("\n")[0]
     assert "naming no slip" in moves and "`extra`" in moves
-    assert main(["course", "rubric", "13", "--course", str(COURSE)]) == 2
+    assert main(["course", "rubric", "14", "--course", str(COURSE)]) == 2
     assert "robotconf: error:" in capsys.readouterr().err

@@ -50,8 +50,8 @@ def test_a_course_notebook_holds_what_the_kernel_reports(path: Path) -> None:
 
 
 def test_the_course_has_its_notebooks() -> None:
-    # 12 lessons, each a lesson, its exercises and their solutions.
-    assert len(COURSE_NOTEBOOKS) == 36
+    # 13 lessons, each a lesson, its exercises and their solutions.
+    assert len(COURSE_NOTEBOOKS) == 39
 
 
 def test_a_written_quiz_holds_what_the_kernel_reports(tmp_path: Path) -> None:

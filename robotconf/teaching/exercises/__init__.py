@@ -21,13 +21,14 @@ Mistake models
 [1, 2, 3, 4, 5, 6, 7]
 """
 
-from . import _lesson_09, _lesson_10, _lesson_11, _lesson_12, _lessons_02_08
+from . import _lesson_09, _lesson_10, _lesson_11, _lesson_12, _lesson_13, _lessons_02_08
 from ._exam import Exam
 from ._exercise import Assignment, Exercise, registered
 from ._kinds import EXERCISE_SLIPS
 from ._mistake_models import component_slips, configuration_slips, dh_table_slips, matrix_slips
 
-del _lesson_09, _lesson_10, _lesson_11, _lesson_12, _lessons_02_08  # registered on import
+# registered on import
+del _lesson_09, _lesson_10, _lesson_11, _lesson_12, _lesson_13, _lessons_02_08
 
 __all__ = [
     "Assignment",
