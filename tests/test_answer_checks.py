@@ -309,6 +309,14 @@ def test_set_mistakes():
     assert str(extra).startswith("the set of solutions: 2 of 2 solutions right, 1 not.")
 
 
+def test_a_zero_in_a_set_is_never_a_unit_slip():
+    # A thousandth of 1 is near 0 (0.001 absolute near zero): 0 is simply not a solution,
+    # while 2000 is 2 written in the wrong unit.
+    result = rc.check_set([0, 3], [1, 3])
+    assert result.diagnosis == "extra" and result.hints[0] == "0 is not a solution."
+    assert rc.check_set([2000, 3], [2, 3]).diagnosis == "unit_factor"
+
+
 def test_large_sets_are_judged_element_by_element():
     solutions = 1 + np.arange(400) / 100  # 1, 1.01, …, 4.99: distinct within 0.1 %
     assert rc.check_set(solutions[::-1], solutions, rel=1e-3).ok

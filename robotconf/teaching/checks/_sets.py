@@ -142,7 +142,9 @@ def _diagnose_extra(
         ("degrees", np.degrees(solutions), degrees_period),
         ("sign", -solutions, period),
     ]
-    if period is None and length_unit(setting.unit):
+    # A zero is no length off by a factor of 1000 (a thousandth of a small number is near
+    # zero too): only an element with a nonzero entry can show a unit slip.
+    if period is None and length_unit(setting.unit) and np.any(element != 0):
         candidates += [("large", solutions * 1000, None), ("small", solutions / 1000, None)]
     for slip, candidate, candidate_period in candidates:
         found = np.all(close(element[None, :], candidate, setting, candidate_period), axis=1)
