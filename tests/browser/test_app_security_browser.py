@@ -175,7 +175,13 @@ def test_kernels_per_client_are_capped_and_a_closed_tab_frees_one(  # type: igno
         rf"403 POST /voila/api/shutdown/{kernel_id} \S+ [\d.]+ms", guarded_app.log.read_text()
     )
     assert len(refused_posts) == 1, refused_posts
-    assert _status(guarded_app.url) == 200
+    # The cap counts the kernels the server still lists; on a busy machine it may list the
+    # closed one a moment after its process ended. A refused page starts nothing, so ask
+    # again until the place is free.
+    deadline = time.monotonic() + 5
+    while (status := _status(guarded_app.url)) == 429 and time.monotonic() < deadline:
+        time.sleep(0.2)
+    assert status == 200, status
     assert len(guarded_app.kernels()) == CAP
 
 
