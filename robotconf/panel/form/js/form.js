@@ -30,12 +30,13 @@ class Sender {
     this.unanswered = new Map(); // seq -> key of an event the kernel has not answered
     model.on("msg:custom", (message) => {
       if (message && message.ack !== undefined) {
+        const key = this.unanswered.get(message.ack);
         this.unanswered.delete(message.ack);
         this.inFlight = Math.max(0, this.inFlight - 1);
         this.flush();
         // The kernel has handled the event (its new spec, if any, came first): a control
         // whose input changed nothing shows the kernel's value again.
-        this.answered();
+        if (key !== undefined) this.answered(key);
       }
     });
   }
@@ -108,7 +109,7 @@ function shapeOf(rows) {
 }
 
 function render({ model, el }) {
-  const sender = new Sender(model, () => refresh());
+  const sender = new Sender(model, (key) => refresh(key));
   const root = make("div", "rc-form", el);
   // JupyterLab's notebook takes arrow keys for its own shortcuts (a range input is not
   // ":read-write", so command mode claims them): keep them for the form's controls.
@@ -146,6 +147,7 @@ function render({ model, el }) {
             } else {
               view.render(control);
             }
+            view.shown = JSON.stringify(control);
             kept.set(key, view);
             lineEl.appendChild(view.el);
           });
@@ -154,27 +156,39 @@ function render({ model, el }) {
         rowMessages.set(row.key, message);
         showMessage(message, row.message);
         message.classList.add("rc-row-message");
+        message.shown = JSON.stringify(row.message || null);
       }
       views = kept;
       return;
     }
     for (const row of rows) {
+      // A q step changes one or two controls of a form of dozens: drawing only what
+      // changed keeps the page's style and layout work (most of a drag's cost in the
+      // browser) to those.
       (row.lines || []).forEach((line, n) =>
         line.forEach((control, i) => {
           const view = views.get(controlKey(control, row, n, i));
-          if (view) view.render(control);
+          if (!view) return;
+          const text = JSON.stringify(control);
+          if (text === view.shown) return;
+          view.render(control);
+          view.shown = text;
         })
       );
       const message = rowMessages.get(row.key);
-      if (message) {
+      const text = JSON.stringify(row.message || null);
+      if (message && text !== message.shown) {
         showMessage(message, row.message);
         message.classList.add("rc-row-message");
+        message.shown = text;
       }
     }
   };
-  const refresh = () => {
-    const spec = specOf();
-    if (shapeOf(spec.rows || []) === shape) draw();
+  // The kernel answered an event of `key`: that control shows the kernel's value again
+  // (its spec may be the same as before, when the input changed nothing).
+  const refresh = (key) => {
+    const view = views.get(key);
+    if (view && view.spec) view.render(view.spec);
   };
   model.on("change:_spec_json", draw);
   draw();
