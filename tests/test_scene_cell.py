@@ -335,3 +335,24 @@ def test_a_cell_grown_past_its_scale_rescales_triads_and_label_clearances(
     for name in ("fixture", "table", "table/pick", "floor"):
         anchor = moved[f"{NAMES}/{key(scene, name)}"]
         np.testing.assert_allclose(anchor[0, 0], 0.15 * triad, rtol=1e-6)
+
+
+@pytest.mark.parametrize("kind", ["robot", "cell"])
+def test_a_view_shown_by_rc_view_is_not_shown_twice_in_its_cell(kind, monkeypatch) -> None:
+    import IPython.display
+
+    from robotconf.scene import _view
+
+    shown: list[object] = []
+    monkeypatch.setattr(IPython.display, "display", lambda obj: shown.append(obj))
+    monkeypatch.setattr(_view, "execution_count", lambda: 7)
+    scene = (
+        rc.view(rc.preset("paper"), display=False)
+        if kind == "robot"
+        else rc.view(paper_cell(), display=False)
+    )
+    scene._shown_in_cell = 7  # as rc.view(..., display=True) leaves it in cell 7
+    scene._ipython_display_()  # IPython's display of the returned value: skipped
+    assert shown == []
+    scene._ipython_display_()  # shown again later in the same cell: displayed
+    assert len(shown) == 1

@@ -421,16 +421,9 @@ class Scene:
         self.channel.close()
 
     def _ipython_display_(self) -> None:
-        from IPython.display import display
+        from ._view import display_once
 
-        from ._view import execution_count
-
-        # `rc.view(robot)` as a cell's last line displays the pane, then IPython displays
-        # the returned scene again: skip that second one (same cell), allow any later one.
-        if self._shown_in_cell is not None and self._shown_in_cell == execution_count():
-            self._shown_in_cell = None
-            return
-        display(self._pane if self._pane is not None else repr(self))
+        display_once(self)
 
     def __repr__(self) -> str:
         return f"<Scene of {self.robot.n} modules at q={np.round(self.q, 4).tolist()}>"

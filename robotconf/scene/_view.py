@@ -66,3 +66,18 @@ def execution_count() -> int | None:
 
     shell = get_ipython()
     return None if shell is None else int(shell.execution_count)
+
+
+def display_once(scene: Any) -> None:
+    """Display ``scene``'s pane, except the second time in the cell that
+    :func:`view` displayed it in (IPython then displays the returned scene again).
+
+    ``scene`` has ``_shown_in_cell`` (the cell :func:`view` displayed it in, or None)
+    and ``_pane``.
+    """
+    from IPython.display import display
+
+    if scene._shown_in_cell is not None and scene._shown_in_cell == execution_count():
+        scene._shown_in_cell = None
+        return
+    display(scene._pane if scene._pane is not None else repr(scene))

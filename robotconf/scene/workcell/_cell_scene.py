@@ -397,15 +397,9 @@ class CellScene:
         self.channel.close()
 
     def _ipython_display_(self) -> None:
-        from IPython.display import display
+        from .._view import display_once
 
-        from .._view import execution_count
-
-        # As for Scene: `rc.view(cell)` as a cell's last line shows the pane once.
-        if self._shown_in_cell is not None and self._shown_in_cell == execution_count():
-            self._shown_in_cell = None
-            return
-        display(self._pane if self._pane is not None else repr(self))
+        display_once(self)
 
     def __repr__(self) -> str:
         return f"<CellScene of {self.cell!r}>"
