@@ -155,3 +155,23 @@ def test_a_descent_stopped_at_a_joint_limit_tries_the_other_starts():
     assert result.position_error <= sampled + 1e-9
     assert sampled - result.position_error < 1.0  # the 3° grid misses it by little
     assert "the closest configuration found misses it by 63.76" in result.message
+
+
+def test_a_robot_without_a_moving_joint_stands_where_it_is():
+    # One "none" module: the end effector is fixed at (1, 0, 0); every other point is
+    # missed by exactly its distance to it, and the robot's own point is met.
+    robot = rc.Robot([rc.Module("none", (1, 0, 0))], end_effector=(1, 0, 0))
+    targets = np.array([[1.0, 2.0, 3.0], [2.0, 0.0, 0.0], [1.0, 0.0, 0.0]])
+    result = ik(robot, targets)
+    np.testing.assert_array_equal(result.q, np.zeros((3, 1)))
+    assert list(result.success) == [False, False, True]
+    assert list(result.reason[:2]) == ["unreachable", "unreachable"]
+    np.testing.assert_allclose(result.position_error, [np.sqrt(13.0), 1.0, 0.0], atol=1e-12)
+
+
+def test_a_line_move_of_a_robot_without_a_moving_joint_is_refused_by_name():
+    from robotconf.programs import LIN, Program
+
+    robot = rc.Robot([rc.Module("none", (1, 0, 0))], end_effector=(1, 0, 0))
+    with pytest.raises(rc.InvalidInputError, match=r"moves\[0\]\.position: unreachable"):
+        Program(robot, [LIN(position=[2, 0, 0], speed=1)])

@@ -156,6 +156,8 @@ def descend(
     -------
     Closest
     """
+    if not problem.joints.size:
+        return _still(problem, index, q)
     if len(index) <= CHUNK:
         return _descend(problem, index, q, limits, max_iterations)
     parts = [
@@ -165,6 +167,17 @@ def descend(
     return Closest(
         *(np.concatenate([getattr(p, f) for p in parts]) for f in Closest.__dataclass_fields__)
     )
+
+
+def _still(problem: Problem, index: np.ndarray, q: np.ndarray) -> Closest:
+    """A robot without a moving joint cannot move: where it stands is its closest
+    configuration, a minimum of the distance with nothing to descend."""
+    count = len(index)
+    error = problem.evaluate(
+        problem.positions[index], problem.rotations_of(index), q[:, :0], jacobian=False
+    )[0]
+    status = np.where(problem.converged(error), CONVERGED, STATIONARY)
+    return Closest(q.copy(), error, status, np.ones(count, dtype=bool), np.zeros(count, dtype=int))
 
 
 def _descend(
