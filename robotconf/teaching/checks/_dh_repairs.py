@@ -18,8 +18,7 @@ import numpy as np
 
 from ..._errors import InvalidInputError
 from ...kinematics import Robot, characteristic_length, joint_axes
-from ._dh_table_text import (
-    DHRow,
+from ._dh_hints import (
     convention_hint,
     degrees_hint,
     exchanged_hint,
@@ -27,6 +26,7 @@ from ._dh_table_text import (
     repair_hint,
     swapped_columns_hint,
 )
+from ._dh_table_text import DHRow
 
 __all__ = ["Match", "Reference", "compare", "diagnose", "reference"]
 

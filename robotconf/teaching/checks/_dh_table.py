@@ -29,14 +29,9 @@ from ...kinematics import (
 )
 from ..reading._tolerance import REL_TOL
 from ..reading._wrapper import answer_check, passed
+from ._dh_hints import NO_ANSWER, joint_type_hint, row_count_hint
 from ._dh_repairs import Reference, compare, diagnose, reference
-from ._dh_table_text import (
-    NO_ANSWER,
-    DHRow,
-    joint_type_hint,
-    parse_dh_rows,
-    row_count_hint,
-)
+from ._dh_table_text import DHRow, parse_dh_rows
 
 __all__ = ["DH_DIAGNOSES", "DHTableCheck", "assert_dh_table", "check_dh_table", "describes"]
 
