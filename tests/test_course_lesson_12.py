@@ -267,6 +267,20 @@ def test_demo_joint_speed_by_hand_agrees_with_the_simulation():
     )
 
 
+def test_a_link_length_where_the_tips_x_belongs_is_named():
+    """Exercise 6 by hand: q̇2 = v·x*/(l1·l2·sin q2); l1 or l2 (or L) for x* is one slip."""
+    task = rc.Assignment("12_trajectories", "demo")
+    n = task.numbers
+    l1, l2, x, v = n["l1"], n["l2"], n["x_star"], n["v_6"]
+    q2 = math.acos((x**2 - l1**2 - l2**2) / (2 * l1 * l2))
+    det = l1 * l2 * math.sin(q2)
+    assert task.check(6, round(v * x / det, 4)).ok
+    for length, words in ((l1, "l1"), (l2, "l2"), (l1 + l2, "length L")):
+        result = task.check(6, round(v * length / det, 4))
+        assert not result.ok and result.diagnosis == "length_for_x"
+        assert words in result.hints[0]
+
+
 def test_another_student_gets_other_numbers():
     demo, other = _numbers("demo"), _numbers(OTHER_ID)
     for name in ("answer_1", "answer_2", "answer_3", "answer_4", "answer_6"):

@@ -277,13 +277,36 @@ MISTAKES = {
         [],
         "not into a row of its own",
     ),
+    # the last link's length written wrong: its a, named with the number written
     "tool length": (
         PAPER,
         [*PAPER_STD[:2], ("q3", 0, 45, 0)],
+        "a_value",
+        [],
+        "Row 3: a3 = 45 is not the robot's",
+    ),
+    # a wrong height and a wrong length in the last row: no one constant explains it
+    "tool constants": (
+        PAPER,
+        [*PAPER_STD[:2], ("q3", 5, 45, 0)],
         "end_effector",
         [],
         "Every joint axis is right, but the end-effector is not: check the constants of the "
         "last row (d3 and a3): the tool sits at the origin of frame 3.",
+    ),
+    "link lengths exchanged": (
+        PAPER,
+        [PAPER_STD[0], ("q2", 0, 40, 0), ("q3", 0, 30, 0)],
+        "a_value",
+        [3],
+        "Rows 2 and 3: a2 and a3 look exchanged",
+    ),
+    "another length for a height": (
+        PAPER,
+        [("q1", 30, 0, "-pi/2"), *PAPER_STD[1:]],
+        "d_value",
+        [2, 3],
+        "Row 1: d1 = 30 is not the robot's",
     ),
     # the quarter turn between x1 and x2 forgotten; z0 and z1 are one line, so θ1 could take
     # it too, but the hint points at the row where it usually goes missing

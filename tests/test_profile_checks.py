@@ -181,6 +181,8 @@ SLIPS = [
     (QUINTIC, 1.5 * 0.3, {"form": "peak_speed"}, "cubic_quintic_swapped", "cubic's numbers"),
     (CUBIC, 10 / math.sqrt(3) * 0.15, {"form": "peak_accel"}, "cubic_quintic_swapped", "quintic"),
     (QUINTIC, 0.3, {"form": "peak_speed"}, "average_speed", "the average speed d/T"),
+    # 15/8·d: the peak of dq/dτ, not divided by T = 2 (the right peak is 15/8·0.6/2)
+    (QUINTIC, 15 / 8 * 0.6, {"form": "peak_speed"}, "normalized_time", "divided by T"),
     (QUINTIC, [0.1, 0, 0, 6, -9, 3.6], {}, "normalized_time", "in τ = t/T"),
     (QUINTIC, [0.1125, -0.5625, 0.75, 0, 0, 0.1], {}, "descending_order", "reverse order"),
     # the speed limit alone gives 15/8 s; the acceleration limit asks for longer

@@ -22,6 +22,7 @@ from ._dh_table_text import (
     DHRow,
     convention_hint,
     degrees_hint,
+    exchanged_hint,
     generic_hint,
     repair_hint,
     swapped_columns_hint,
@@ -192,10 +193,36 @@ def diagnose(
     found = _length_repair(ref, rows[:suspects], rows, convention, end_effector)
     if found is not None:
         code, r, repaired = found
-        return code, repair_hint(code, r, convention, repaired if reveal else None)
+        written = float(rows[r][1 if code == "d_value" else 2])
+        shown = repaired if reveal else None
+        return code, repair_hint(code, r, convention, shown, written=written or None)
+    exchanged = _exchanged_lengths(ref, rows, convention, end_effector)
+    if exchanged is not None:
+        code, pair = exchanged
+        return code, exchanged_hint(code, pair, convention)
     first = own.wrong[0] if own.wrong else None
     tool = bool(np.any(np.asarray(end_effector) != 0))
     return generic_hint(first, own.first_reversed, convention, len(rows), tool)
+
+
+def _exchanged_lengths(
+    ref: Reference, rows: tuple[DHRow, ...], convention: str, end_effector: Any
+) -> tuple[str, tuple[int, int]] | None:
+    """Two rows' d (or two rows' a) written in each other's place: two link lengths
+    exchanged. Returns the code and the two 0-based rows, or None."""
+    for code, column in (("a_value", 2), ("d_value", 1)):
+        for i in range(len(rows)):
+            for j in range(i + 1, len(rows)):
+                if np.isclose(rows[i][column], rows[j][column]):
+                    continue
+                field = "da"[column - 1]
+                table = list(rows)
+                table[i] = _with(rows[i], **{field: float(rows[j][column])})
+                table[j] = _with(rows[j], **{field: float(rows[i][column])})
+                match = compare(ref, tuple(table), convention, end_effector)
+                if match is not None and match.ok:
+                    return code, (i, j)
+    return None
 
 
 def _length_repair(
@@ -205,13 +232,15 @@ def _length_repair(
     convention: str,
     end_effector: Any,
 ) -> tuple[str, int, DHRow] | None:
-    """A constant left out of one row's d or a (a forgotten height, a slide's start): the
-    row has 0 there.
+    """A wrong constant in one row's d or a: left out (a forgotten height, a slide's
+    start: the row has 0 there) or another length written there (f for h, a length
+    measured from the wrong joint).
 
     Adding ``c`` to ``d_r`` moves everything after it along joint r's axis; adding it to
-    ``a_r`` along ``x_r``. ``c`` is read off the end-effector's offset from the robot's
-    along that direction, averaged over the sample configurations, and kept when the
-    repaired table describes the robot.
+    ``a_r`` along ``x_r`` (standard) or ``x_(r-1)`` (modified: row r holds the link
+    before joint r). ``c`` is read off the end-effector's offset from the robot's along
+    that direction, averaged over the sample configurations, and kept when the repaired
+    table describes the robot. A forgotten constant is tried before a wrong one.
     """
     try:
         robot = Robot.from_dh(rows, convention=convention, end_effector=end_effector)
@@ -222,23 +251,27 @@ def _length_repair(
     poses = robot.frame_poses(ref.q)  # (K, n, 4, 4)
     # Where two rows' d lie along one line either fixes the table: the later row (a slide
     # written without its start, a height left out of the row that has it) comes first.
-    for r in reversed(range(len(suspects))):
-        # d_r is along the axis joint r moves about (standard: z_(r-1), modified: z_r)
-        along_d = axes[:, r, :]
-        along_a = poses[:, r, :3, 0] if convention == "standard" else None
-        for code, direction in (("d_value", along_d), ("a_value", along_a)):
-            if direction is None:
-                continue
-            c = float(np.mean(np.einsum("kj,kj->k", gap, direction)))
-            if abs(c) <= ref.tol * ref.scale:
-                continue
-            field = "d" if code == "d_value" else "a"
-            row = rows[r]
-            if row[1 if field == "d" else 2] != 0:  # a length written: not a forgotten one
-                continue
-            repaired = _with(row, **{field: float(row[1 if field == "d" else 2]) + c})
-            table = rows[:r] + (repaired,) + rows[r + 1 :]
-            match = compare(ref, table, convention, end_effector)
-            if match is not None and match.ok:
-                return code, r, repaired
+    for forgotten in (True, False):
+        for r in reversed(range(len(suspects))):
+            # d_r is along the axis joint r moves about (standard: z_(r-1), modified: z_r)
+            along_d = axes[:, r, :]
+            if convention == "standard":
+                along_a = poses[:, r, :3, 0]
+            elif r:
+                along_a = poses[:, r - 1, :3, 0]
+            else:  # the modified table's a0 is along the base frame's x
+                along_a = np.tile([1.0, 0.0, 0.0], (len(gap), 1))
+            for code, direction in (("d_value", along_d), ("a_value", along_a)):
+                column = 1 if code == "d_value" else 2
+                row = rows[r]
+                if (row[column] == 0) != forgotten:
+                    continue
+                c = float(np.mean(np.einsum("kj,kj->k", gap, direction)))
+                if abs(c) <= ref.tol * ref.scale:
+                    continue
+                repaired = _with(row, **{"da"[column - 1]: float(row[column]) + c})
+                table = rows[:r] + (repaired,) + rows[r + 1 :]
+                match = compare(ref, table, convention, end_effector)
+                if match is not None and match.ok:
+                    return code, r, repaired
     return None

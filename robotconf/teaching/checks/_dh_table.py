@@ -55,8 +55,10 @@ DH_DIAGNOSES = {
     "twist": "a z axis not turned onto the next joint's axis (a wrong α)",
     "a_sign": "one a with the wrong sign",
     "d_sign": "one d with the wrong sign",
-    "d_value": "a constant missing from one d (a forgotten height, a slide's start)",
-    "a_value": "a constant missing from one a (a forgotten link length)",
+    "d_value": "a wrong constant in one d (a forgotten height or slide start, another "
+    "length written there, or two rows' d exchanged)",
+    "a_value": "a wrong constant in one a (a forgotten link length, another length written "
+    "there, or two rows' a exchanged)",
     "axis": "a joint axis in the wrong place, no single slip recognised",
     "reversed_axis": "a joint axis on the right line, pointing the other way",
     "end_effector": "every axis right, the end-effector not",
@@ -257,9 +259,10 @@ def _check(
     if parsed.issues:
         given = len(answer) if isinstance(answer, (list, tuple)) else 0
         codes = {code for code, _ in parsed.issues}
-        if given > len(ref.letters) and codes == {"joint_variable"}:
-            # a row without a joint variable in a table that is too long: a constant
-            # offset written as a row of its own, not a variable forgotten
+        if given != len(ref.letters) and codes == {"joint_variable"}:
+            # Too long: a constant offset written as a row of its own, not a variable
+            # forgotten. Too short: the rows keep their joints' names (q2 in row 1), so
+            # the variables are off by the row that is missing.
             return fail("row_count", [row_count_hint(given, len(ref.letters))])
         return fail(parsed.issues[0][0], [hint for _, hint in parsed.issues])
     rows = parsed.rows

@@ -42,6 +42,7 @@ __all__ = [
     "NO_ANSWER",
     "convention_hint",
     "degrees_hint",
+    "exchanged_hint",
     "generic_hint",
     "joint_type_hint",
     "repair_hint",
@@ -313,8 +314,17 @@ def _number(value: float) -> str:
     return f"{value:.6g}"
 
 
-def repair_hint(code: str, r: int, convention: str, repaired: DHRow | None = None) -> str:
-    """The hint for a single-row mistake (``code`` as in ``DHTableCheck.diagnosis``).
+def repair_hint(
+    code: str,
+    r: int,
+    convention: str,
+    repaired: DHRow | None = None,
+    *,
+    written: float | None = None,
+) -> str:
+    """The hint for a single-row mistake (``code`` as in ``DHTableCheck.diagnosis``);
+    ``written``: for ``d_value``/``a_value``, the length the row holds where another
+    belongs (None: the row has 0 there, a constant left out).
 
     >>> print(repair_hint("alpha_sign", 0, "standard"))  # doctest: +ELLIPSIS
     Row 1: check the sign of α1. With it, z1 points the wrong way, so joint 2 turns ...
@@ -360,6 +370,20 @@ def repair_hint(code: str, r: int, convention: str, repaired: DHRow | None = Non
         ),
     }
     text = texts[code]
+    if written is not None and code in ("d_value", "a_value"):
+        field, along = (
+            (n.d, f"{n.z_d} from x{i - 1} to x{i}")
+            if code == "d_value"
+            else (
+                n.a,
+                f"{n.x_about} from {n.z_from} to {n.z_to}",
+            )
+        )
+        text = (
+            f"Row {i}: {field} = {_number(written)} is not the robot's: {field} is the "
+            f"distance along {along} at q = 0 — check which length of the drawing goes "
+            "there (another link's length, or one measured from another joint?)."
+        )
     if repaired is not None:
         theta, d, a, alpha, joint = repaired
         text += (
@@ -367,6 +391,24 @@ def repair_hint(code: str, r: int, convention: str, repaired: DHRow | None = Non
             f"α = {_number(alpha)} ({joint}; q{i} added to {'θ' if joint == 'R' else 'd'})."
         )
     return text
+
+
+def exchanged_hint(code: str, rows: tuple[int, int], convention: str) -> str:
+    """Two rows' a (or d) exchanged: each row holds the other's length (rows 0-based).
+
+    >>> exchanged_hint("a_value", (0, 1), "standard")  # doctest: +ELLIPSIS
+    'Rows 1 and 2: a1 and a2 look exchanged: ...'
+    """
+    first, second = (_names(r, convention) for r in rows)
+    if code == "d_value":
+        names, what = (first.d, second.d), "d is the distance along the joint's z axis"
+    else:
+        names, what = (first.a, second.a), "a is the length of the link along its x axis"
+    return (
+        f"Rows {rows[0] + 1} and {rows[1] + 1}: {names[0]} and {names[1]} look exchanged: "
+        f"{what}, so each row takes the length of its own link (which link comes after "
+        "which joint?)."
+    )
 
 
 def swapped_columns_hint(rows: list[int], convention: str) -> str:

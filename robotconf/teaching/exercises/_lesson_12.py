@@ -213,7 +213,7 @@ EXERCISE_SLIPS.update(
         "ptp_counted": "the PTP into the stretched pose counted too",
         "joint_1_speed": "joint 1's speed where joint 2's is asked",
         "x_left_out": "v/(l1·l2·sin q2): the factor x* of J⁻¹ left out",
-        "length_for_x": "L, the arm's length, where the tip's x* belongs",
+        "length_for_x": "a length (L, l1 or l2) where the tip's x* belongs",
         "cos_for_sin": "cos q2 where det J = l1·l2·sin q2",
     }
 )
@@ -295,6 +295,14 @@ def _speed_named(n: Any) -> dict[str, tuple[Any, str]]:
         "length_for_x": (
             float(v * (l1 + l2) / det),
             "Use the tip's x* where it passes, not the arm's length L.",
+        ),
+        "length_for_x[l1]": (
+            float(v * l1 / det),
+            "Use the tip's x* where it passes, not the first link's length l1.",
+        ),
+        "length_for_x[l2]": (
+            float(v * l2 / det),
+            "Use the tip's x* where it passes, not the second link's length l2.",
         ),
         "cos_for_sin": (
             float(v * x_star / (l1 * l2 * np.cos(q2))),

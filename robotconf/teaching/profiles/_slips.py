@@ -134,6 +134,10 @@ HINTS = {
         "These are the coefficients of u in τ = t/T: give q(t)'s coefficients in seconds "
         "(divide the k-th one by T^k, and scale by the distance)."
     ),
+    "normalized_speed": (
+        "That is the peak of dq/dτ in τ = t/T, the speed per unit of τ: in time it is "
+        "divided by T (q̇ = (dq/dτ)/T)."
+    ),
     "descending_order": (
         "The coefficients are in reverse order: give them lowest power first, "
         "[a0, a1, a2, …] (numpy's polyval takes the highest first)."
@@ -306,6 +310,8 @@ def profile_slips(
     if form == "peak_speed":
         average = (np.abs(task.distance) / task.duration).reshape(right.shape)
         add("average_speed", average, HINTS["average_speed"])
+        if task.kind != "trapezoidal" and not np.isclose(task.duration, 1.0):
+            add("normalized_time", right * task.duration, HINTS["normalized_speed"])
     if form == "parameters":  # the times right, the average d/T for the peak
         partly = right.copy()
         partly[2] = abs(float(task.distance[0])) / task.duration

@@ -4,8 +4,9 @@ Rounding a number to 3 significant digits moves it by at most half a unit of its
 digit: at most 0.5 % of the number (1.005 → 1.00 or 1.01). So every check accepts a
 number within 0.5 % of the expected one, or within 0.001 of it near zero, unless an
 exercise asks for more; an answer rounded further gets the rounding hint (keep 3
-significant digits), never a bare "wrong". Matrices compare each entry within
-``0.005·max(1, |expected|)`` (entries are lengths and sines alike), and inverse
+significant digits), never a bare "wrong". Matrices compare each entry the same way,
+within ``0.005·max(0.2, |expected|)`` = ``max(0.001, 0.005·|expected|)`` (entries are
+lengths and sines alike: :data:`SCALE_FLOOR`), and inverse
 kinematics the end effector within 0.5 % of the robot's size (angles with 3 significant
 digits reach it).
 
