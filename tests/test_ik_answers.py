@@ -317,3 +317,15 @@ def test_every_diagnosis_code_is_documented():
 def test_html_shows_the_note_of_a_right_answer():
     result = rc.check_ik_solution(paper_by_hand(30, 20, 50, -1), PAPER, [30, 20, 50])
     assert "✔" in result._repr_html_() and "below its lower limit" in result._repr_html_()
+
+
+def test_an_angle_rounded_past_three_digits_is_too_rounded_even_when_the_tip_forgives_it():
+    # Exact: (0, π/2). 1.58 is 0.6 % from π/2 (past the 0.5 % of 3 significant digits),
+    # yet the tip misses by only 0.0092 of the 0.01 allowed for L = 2.
+    result = rc.check_ik_solution([0, 1.58], ARM, ONE_ONE)
+    assert not result.ok and result.diagnosis == "too_rounded", str(result)
+    assert "q2" in result.hints[0] and "keep 3 significant digits" in result.hints[0]
+    assert rc.check_ik_solution([0.0004, 1.571], ARM, ONE_ONE).ok  # 3 digits; 0.001 near 0
+    assert rc.check_ik_solution([2 * math.pi, 1.57 - 2 * math.pi], ARM, ONE_ONE).ok  # turns
+    # a teacher's own tolerance is about the tip alone
+    assert rc.check_ik_solution([0, 1.58], ARM, ONE_ONE, tol=8e-3).ok

@@ -58,6 +58,10 @@ def _no_eval_fixture(request):
         ("π/2", sympy.pi / 2),
         ("  ((q1))  ", q1),
         ("1e-3", sympy.Rational(1, 1000)),
+        # the inverse functions of an IK derivation
+        ("atan2(1, -1)", 3 * sympy.pi / 4),
+        ("atan2(q2, l1) - acos(0.5)", sympy.atan2(q2, l1) - sympy.pi / 3),
+        ("asin(1) + atan(q1)", sympy.pi / 2 + sympy.atan(q1)),
     ],
 )
 def test_parses_whitelisted_expressions(text, expected):
@@ -108,8 +112,13 @@ def test_custom_symbols():
         ("q1 and q2", "'and'/'or' is not allowed"),
         ("q1 < q2", "character '<' is not allowed"),
         ("q1[0]", "indexing"),
-        ("open(q1)", "only sin, cos, tan and sqrt may be called"),
+        ("open(q1)", "only sin, cos, tan, sqrt, asin, acos, atan and atan2 may be called"),
         ("sin(q1, q2)", "sin takes exactly one argument"),
+        ("atan2(q1)", r"atan2 takes two arguments, atan2\(y, x\)"),
+        ("atan2(0, 0.0)", r"atan2\(0, 0\) has no angle"),
+        ("acos(1.5)", "acos takes a number from -1 to 1"),
+        ("asin(-2)", "asin takes a number from -1 to 1"),
+        ("atan(1/0)", "division by zero"),
         ("sin(x=q1)", "character '=' is not allowed"),
         ("sin", "sin needs an argument"),
         ("q1^2", r"use \*\* for powers: q1\*\*2"),

@@ -8,6 +8,7 @@ from collections.abc import Iterable
 from dataclasses import dataclass
 
 import robotconf as rc
+from robotconf.grading.rubric._rubric import UNEXPLAINED
 
 from .case import Case
 from .references import reference
@@ -23,6 +24,10 @@ ASSIGNED = {
 _EXERCISE = re.compile(r"(L\d+)\.ex(\d+)")
 #: Codes that name no mistake: the checker saw the answer is wrong, and no more.
 GENERIC = {"wrong", "axis", "reversed_axis", "end_effector"}
+#: Codes that name no slip of a right method (the rubric's own list): a case labelled
+#: None ("no single slip explains it") is right to get one of them, and a case labelled
+#: with one (a solution missing from a set) is right to get that one.
+NO_SLIP = UNEXPLAINED
 #: One mistake, two codes: a matrix check says ``unit_slip`` where a number check says
 #: ``unit_factor`` (a length in mm for m). A label matches either.
 SAME_MISTAKE = {"unit_factor": "unit_slip"}
@@ -75,13 +80,20 @@ class Outcome:
     grade: str
 
 
+def _named(found: str | None, label: str | None) -> bool:
+    """Whether the checker's primary diagnosis is the one the case expects."""
+    if label is None and found in NO_SLIP:
+        return True
+    return _code(found) == _code(label)
+
+
 def judge(case: Case) -> Outcome:
     """Check one case's answer and grade the result."""
     result = verdict(case)
     diagnosis = result.diagnosis if result.diagnosis not in GENERIC else None  # type: ignore[attr-defined]
     if result.ok != case.ok:  # type: ignore[attr-defined]
         grade = "false accept" if result.ok else "false reject"  # type: ignore[attr-defined]
-    elif case.ok or _code(diagnosis) == _code(case.diagnosis):
+    elif case.ok or _named(diagnosis, case.diagnosis):
         grade = "right"
     elif diagnosis is None:
         grade = "vague"

@@ -29,6 +29,7 @@ from ..._validation import check_finite_number
 from ...kinematics import MAX_MODULES
 from ..reading._numeric_eval import NotEvaluable, TooLarge, complex_values
 from ..reading._parser import parse_expression, parse_matrix
+from ..reading._text import FUNCTION_WORDS
 
 __all__ = ["DHRow", "ParsedTable", "joint_symbol", "parse_dh_rows"]
 
@@ -132,7 +133,7 @@ def _probe(expr: Any, values: dict[str, float], own: str, where: str) -> np.ndar
     try:
         result = complex_values(expr, env, k, strict=True)
     except (NotEvaluable, TooLarge):
-        raise InvalidInputError(where, str(expr)[:60], "numbers, pi, sin, cos, tan, sqrt") from None
+        raise InvalidInputError(where, str(expr)[:60], f"numbers, pi, {FUNCTION_WORDS}") from None
     if not np.all(np.isfinite(result)) or np.any(np.abs(result.imag) > 1e-12):
         raise InvalidInputError(where, str(expr)[:60], "a real, finite number")
     return result.real

@@ -25,7 +25,7 @@ from ..reading._parser import ParserLimits
 from ..reading._shown import number_text, sentence
 from ..reading._tolerance import REL_TOL
 from ..reading._wrapper import answer_check, passed
-from ._diagnosis import SLIP_TOL, diagnose, nearest_solution
+from ._diagnosis import SLIP_TOL, diagnose, nearest_solution, rounded_past_the_rule
 from ._problem import IKProblem
 from ._result import IKCheck, verdict
 
@@ -93,6 +93,9 @@ def _judge(
     more: dict[str, Any] = {"reached": reached, "headline": f"{name}: not right yet."}
     if problem.reaches(q):
         more["branches"] = (_branch(problem, q),)
+        coarse = rounded_past_the_rule(problem, q, "your answer")
+        if coarse is not None:
+            return verdict([coarse.hint], [coarse.code], name, q, target, hint, **more)
         outside = problem.outside_limits(q)
         if not outside:
             return verdict([], [], name, q, target, hint, **more)

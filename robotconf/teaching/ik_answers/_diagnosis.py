@@ -20,6 +20,7 @@ from ...inverse_kinematics import IKSolutions, ik
 from ...kinematics import joint_axes
 from ..diagnosis._components import rounded
 from ..reading._shown import number_text
+from ..reading._tolerance import REL_TOL, SCALE_FLOOR
 from ._problem import IKProblem
 
 __all__ = [
@@ -30,6 +31,7 @@ __all__ = [
     "elbow_joints",
     "joint_before",
     "nearest_solution",
+    "rounded_past_the_rule",
 ]
 
 #: How far (rad) an answer may sit from a rebuilt slip and still be that slip: typed
@@ -81,6 +83,49 @@ def nearest_solution(problem: IKProblem, q: np.ndarray) -> tuple[np.ndarray, str
 def capital(text: str) -> str:
     """``text`` with a capital first letter: hints start with their subject."""
     return text[:1].upper() + text[1:]
+
+
+def rounded_past_the_rule(problem: IKProblem, q: np.ndarray, subject: str) -> Finding | None:
+    """An answer that reaches the target, but with a joint value rounded further than the
+    course's rule allows (3 significant digits: within ``tol·max(0.2, |value|)`` of the
+    closed-form solution it stands for, a whole turn aside). The end effector's tolerance
+    alone would let a 2-digit answer through when the arm happens to forgive it.
+
+    Only at the course's tolerance (a ``tol`` a teacher sets is about the end effector
+    and replaces the rule), where the closed form lists every solution (no free joint),
+    and for an answer near one of them: an answer on a continuum of solutions is judged
+    by its end effector.
+
+    >>> import robotconf as rc
+    >>> problem = IKProblem(rc.preset("planar_2r", l1=1, l2=1), [1, 1, 0], "position", REL_TOL)
+    >>> rounded_past_the_rule(problem, np.array([1.57, -1.571]), "your answer") is None
+    True
+    >>> rounded_past_the_rule(problem, np.array([1.6, -1.6]), "your answer").code
+    'too_rounded'
+    """
+    if problem.tol != REL_TOL:
+        return None
+    solutions = problem.solutions
+    if solutions is None or not len(solutions) or solutions.reason:
+        return None
+    row, spread = problem.closest(q, solutions.q)
+    if spread > ROUNDING_GAP:
+        return None
+    solution = solutions.q[row]
+    near = solution + np.where(
+        problem.revolute, 2 * math.pi * np.round((q - solution) / (2 * math.pi)), 0.0
+    )
+    allowed = problem.tol * np.maximum(SCALE_FLOOR, np.abs(near))
+    coarse = problem.moving & (problem.gap(q, near) > allowed)
+    if not coarse.any():
+        return None
+    names = ", ".join(problem.names[i] for i in np.flatnonzero(coarse))
+    return Finding(
+        "too_rounded",
+        f"{capital(subject)} is a solution rounded too much: {names} lies more than "
+        f"{number_text(100 * problem.tol)} % from the exact value; keep 3 significant digits.",
+        near,
+    )
 
 
 def _rounded(problem: IKProblem, q: np.ndarray, subject: str) -> Finding | None:

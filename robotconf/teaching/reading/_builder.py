@@ -3,7 +3,8 @@
 The second half of the whitelist parser (:mod:`._parser`): every node of the tree is
 checked against a short whitelist while the expression is built by hand — numbers,
 the allowed symbols and ``pi``, ``+ - * / **``, calls of ``sin``, ``cos``, ``tan``,
-``sqrt`` with one argument, and list brackets for a matrix. Every number the formula
+``sqrt``, ``asin``, ``acos``, ``atan`` with one argument and ``atan2(y, x)`` with two,
+and list brackets for a matrix. Every number the formula
 builds is capped (:data:`~._text.MAX_NUMBER_BITS`).
 """
 
@@ -16,6 +17,7 @@ from typing import TYPE_CHECKING, Any
 from ..._errors import InvalidInputError
 from ._slips import find_slip, slip_error
 from ._text import (
+    FUNCTION_WORDS,
     FUNCTIONS,
     MAX_NUMBER_BITS,
     NODE_WORDS,
@@ -248,14 +250,35 @@ class Builder:
     def call(self, node: ast.Call) -> Any:
         sympy = self.sympy
         if not isinstance(node.func, ast.Name) or node.func.id not in FUNCTIONS:
-            raise self.fail(node, "only sin, cos, tan and sqrt may be called:")
-        if len(node.args) != 1 or node.keywords or isinstance(node.args[0], ast.Starred):
-            raise self.fail(node, f"{node.func.id} takes exactly one argument:")
-        argument = self.expression(node.args[0])
+            raise self.fail(node, f"only {FUNCTION_WORDS} may be called:")
         name = node.func.id
+        count = 2 if name == "atan2" else 1
+        if (
+            len(node.args) != count
+            or node.keywords
+            or any(isinstance(a, ast.Starred) for a in node.args)
+        ):
+            words = "two arguments, atan2(y, x)" if count == 2 else "exactly one argument"
+            raise self.fail(node, f"{name} takes {words}:")
+        arguments = [self.expression(a) for a in node.args]
+        if name == "atan2":
+            y, x = arguments
+            if y.is_number and x.is_number and y.is_zero and x.is_zero:
+                raise self.fail(node, "atan2(0, 0) has no angle:")
+            return self.finite(node, sympy.atan2(y, x))
+        argument = arguments[0]
         if name == "sqrt":
             return self.finite(node, sympy.sqrt(argument))
-        function = {"sin": sympy.sin, "cos": sympy.cos, "tan": sympy.tan}[name]
+        if name in ("asin", "acos") and argument.is_number and abs(argument) > 1:
+            raise self.fail(node, f"{name} takes a number from -1 to 1:")
+        function = {
+            "sin": sympy.sin,
+            "cos": sympy.cos,
+            "tan": sympy.tan,
+            "asin": sympy.asin,
+            "acos": sympy.acos,
+            "atan": sympy.atan,
+        }[name]
         if argument.is_number:  # exact values: sin(pi/6) is 1/2, tan(pi/2) infinite
             return self.finite(node, function(argument))
         # Of a formula, kept as typed: sympy's own simplification of the argument (looking

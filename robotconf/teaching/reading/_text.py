@@ -21,6 +21,7 @@ from ._slips import find_slip, power_slip, slip_error
 __all__ = [
     "DEFAULT_SYMBOL_NAMES",
     "FUNCTIONS",
+    "FUNCTION_WORDS",
     "MAX_NUMBER_BITS",
     "NODE_WORDS",
     "OPERATORS",
@@ -34,7 +35,11 @@ __all__ = [
 
 #: Symbols a student may use when no robot says otherwise.
 DEFAULT_SYMBOL_NAMES = tuple(f"q{i}" for i in range(1, 13)) + tuple(f"l{i}" for i in range(1, 13))
-FUNCTIONS = ("sin", "cos", "tan", "sqrt")
+#: The functions a student may call (``atan2(y, x)`` takes two arguments, the rest one):
+#: what a hand derivation uses, inverse kinematics' angles included.
+FUNCTIONS = ("sin", "cos", "tan", "sqrt", "asin", "acos", "atan", "atan2")
+#: The same, in words, for the messages.
+FUNCTION_WORDS = ", ".join(FUNCTIONS[:-1]) + f" and {FUNCTIONS[-1]}"
 RESERVED = (*FUNCTIONS, "pi", "Matrix")
 _ASCII_ALLOWED = frozenset(
     "abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789_ \t\r\n+-*/().,[]^"
@@ -120,7 +125,7 @@ def allowed_text(names: Iterable[str]) -> str:
     symbols = ", ".join(shown[:6]) + (", …" if len(shown) > 6 else "")
     return (
         f"numbers, the symbols {symbols}, pi, + - * / **, parentheses, "
-        "sin cos tan sqrt, and [[…], …] for a matrix"
+        f"{' '.join(FUNCTIONS)}, and [[…], …] for a matrix"
     )
 
 
@@ -153,7 +158,7 @@ def _build(names: Iterable[Any]) -> dict[str, Any]:
         if not isinstance(name, str) or not name.isidentifier() or not name.isascii():
             raise InvalidInputError("symbols", item, "names made of letters, digits and _")
         if name in RESERVED:
-            raise InvalidInputError("symbols", name, "names other than sin, cos, tan, sqrt, pi")
+            raise InvalidInputError("symbols", name, f"names other than {FUNCTION_WORDS}, pi")
         table[name] = item if isinstance(item, sympy.Symbol) else sympy.Symbol(name, real=True)
     return table
 
