@@ -15,8 +15,8 @@ diagnosis code a teacher would name (the codes and their meanings:
 ``DH_DIAGNOSES``, ``IK_DIAGNOSES``, ``PROFILE_DIAGNOSES``, ``EXERCISE_SLIPS``), or
 ``None`` when no single slip explains it. ``blind.py`` is the first held-out family
 (lessons 1–8). A held-out module whose cases the checks were then fixed against is
-in-sample from then on: renamed (``lessons_9_12_blind.py``, measured held-out once
-before its fixes) with that history in its docstring.
+in-sample from then on: renamed (``lessons_9_12_blind.py`` and ``lessons_9_12_second.py``,
+each measured held-out once before its fixes) with that history in its docstring.
 """
 
 from __future__ import annotations
@@ -35,6 +35,7 @@ from . import (
     lengths,
     lessons_9_12,
     lessons_9_12_blind,
+    lessons_9_12_second,
     offsets,
     right_answers,
     signs,
@@ -72,6 +73,7 @@ CASES: list[Case] = [
     *heldout.CASES,
     *lessons_9_12.CASES,
     *lessons_9_12_blind.CASES,
+    *lessons_9_12_second.CASES,
     *(case for name in held_out_modules() for case in _held_out(name)),
 ]
 del blind  # read through held_out_modules

@@ -1,4 +1,5 @@
-"""A second blind held-out set of answers to lessons 9–12 (families ``L9-second`` …).
+"""A second blind set of answers to lessons 9–12 (families ``L9-second`` …), held-out
+when measured, in-sample since (the checks were fixed against it; see the end).
 
 Written on 2026-12-02 by a helper session that had not seen how the checker computes its
 diagnoses (it opened neither ``robotconf/teaching/``, ``course/solutions/``, this corpus's
@@ -31,6 +32,16 @@ in row 2), but lesson 9's rules make z point along the joint's arrow and add the
 variable to theta (rule 1 and 6): the table is the ``-q`` slip, now a wrong answer
 labelled ``joint_direction``. With it: 192 answers (38 right, 154 wrong), 142/154 right
 primary diagnoses (92.2 %), 1 false accept, 2 false rejects (the two refused texts).
+
+**In-sample since.** The checks were then changed while looking at these cases, each
+change with its own unit test: student text may call ``asin``, ``acos``, ``atan`` and
+``atan2`` (the two refused texts); an IK answer that reaches the target but has an angle
+rounded past 3 significant digits is ``too_rounded`` (the false accept
+``L11.ex1-two-digits``); the measure counts a code that names no slip (the rubric's own
+list: ``extra``, ``missing``, …) as right for a case labelled ``None``. The DH-table
+changes that name ``cumulative-a2`` and ``a3-cumulative`` were made on the first blind
+set, before this one was merged. After these changes the figure is an in-sample one
+(``python -m tests.diagnosis_corpus``), not a measure of unseen answers.
 """
 
 from __future__ import annotations
