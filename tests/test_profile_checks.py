@@ -176,6 +176,14 @@ SLIPS = [
     (SYNC, 1.0, {}, "not_synchronized", "duration of q1 moving alone"),
     (SYNC, [1.0, 1.0, 1.0], {"form": "peak_speed"}, "not_synchronized", "its own profile"),
     (MIXED, math.sqrt(2), {}, "mixed_limits", "both bind"),
+    # the largest move (q1: 1.2/1.5 + 1.5/3 = 1.3 s) is not the slowest (q2: 1.467 s)
+    (
+        rc.ProfileTask([1.2, 0.8], speed=[1.5, 1.0], accel=[3.0, 1.5]),
+        1.3,
+        {"form": "duration"},
+        "largest_move",
+        "largest",
+    ),
     (QUINTIC, [0.1, 0, 0.45, -0.15], {}, "cubic_quintic_swapped", "These are the cubic's numbers"),
     (CUBIC, [0, 0, 0, 0.75, -0.5625, 0.1125], {}, "cubic_quintic_swapped", "the quintic's numbers"),
     (QUINTIC, 1.5 * 0.3, {"form": "peak_speed"}, "cubic_quintic_swapped", "cubic's numbers"),

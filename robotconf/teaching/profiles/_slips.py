@@ -283,12 +283,18 @@ def profile_slips(
         )
         if form == "duration":
             slowest = max(law.duration for law in own)
+            # The joint with the largest move is the one a student picks for a reason (a
+            # misconception with a name); any other joint's own time is only unsynchronized.
+            # The slowest joint's own time is its own slip (the limits of different joints
+            # mixed), whichever joint moves most.
+            largest = int(np.argmax(np.abs(task.distance)))
+            if own[largest].duration < slowest * (1 - 1e-9):
+                add("largest_move", np.array(own[largest].duration), _fill("largest_move", task))
             for name, law in zip(task.joints, own, strict=True):
                 if law.kind != "still" and law.duration < slowest * (1 - 1e-9):
                     hint = _fill("own_duration", task, joint=name)
                     add("not_synchronized", np.array(law.duration), hint)
             add("mixed_limits", np.array(slowest), _fill("mixed_limits", task))
-            largest = int(np.argmax(np.abs(task.distance)))
             add("largest_move", np.array(own[largest].duration), _fill("largest_move", task))
             if task.kind == "trapezoidal":
                 # d/v + v/a for every joint, short moves too: no triangle check
