@@ -297,3 +297,14 @@ def test_the_lab_names_a_calculator_in_degree_mode_and_an_upward_displacement():
         assert statistics.check(answer, numbers).diagnosis == code, answer
     assert spike.check(0.2199, numbers).diagnosis == "radians_as_degrees"
     assert acceleration.check([-98.62, 0, 2.753], numbers).diagnosis == "radians_as_degrees"
+
+
+def test_the_lab_velocity_names_radians_typed_into_a_degree_mode_calculator():
+    """Student s2041: l3 = 35, A = 2, T = 3, t3 = 3.9 s, so q3 = 2·0.9/3 = 0.6 rad and
+    dq3/dt = 2/3. By hand v = l3·(−sin q3, 0, −cos q3)·dq3/dt; in degree mode sin 0.6° =
+    0.010472 and cos 0.6° = 0.999945 give (−0.2443, 0, −23.33)."""
+    task = rc.Assignment(LAB, "s2041")
+    rate, q3 = 2 / 3, 0.6
+    assert task.check(3, [-35 * np.sin(q3) * rate, 0, -35 * np.cos(q3) * rate]).ok
+    result = task.check(3, [-0.2443, 0.0, -23.33])
+    assert result.diagnosis == "degrees_in_sin" and "degree mode" in result.hints[0]

@@ -156,6 +156,12 @@ def _velocity_named(n: Any) -> dict[str, tuple[Any, str]]:
             _velocity(n, float(np.degrees(q3)), rate).tolist(),
             "q3 is in radians: sin(q3) and cos(q3) of the radians, not of degrees.",
         ),
+        # the same slip the other way round: radians typed into a degree-mode calculator
+        "degrees_in_sin[degree mode]": (
+            _velocity(n, float(np.radians(q3)), rate).tolist(),
+            "q3 is in radians, but your sin and cos took it as degrees (a calculator in "
+            "degree mode): switch it to radians.",
+        ),
     }
 
 
