@@ -19,7 +19,14 @@ is labelled with the code a teacher would name from the rubric's list
 No lesson 10 exercise 5 case uses ``s3073``: that student's period (2.5 s) is not a
 multiple of the sample time (0.2 s), so no sample falls on the drop at ``t = T``.
 
-Measured figures (filled in after the lead's single measurement): not yet measured.
+Measured once by the lead, on the checks as they stood when the set was merged (no check
+was changed while or after looking at these cases): 213 answers (42 right, 171 wrong);
+the right primary diagnosis for 155 of the 171 wrong ones (90.6 %; lesson 9: 33/38,
+10: 34/38, 11: 48/51, 12: 40/44), 2 vague, 14 another diagnosis; 0 false accepts,
+0 false rejects. The measure counts a code that names no slip (the rubric's list, e.g.
+``missing`` or ``extra``) as right for a case labelled ``None``, a rule set before this
+measurement; by the earlier rule (only ``wrong`` and the DH check's axis codes) 3 more
+would be misses: 152/171 (88.9 %).
 """
 
 from __future__ import annotations
