@@ -308,3 +308,12 @@ def test_the_lab_velocity_names_radians_typed_into_a_degree_mode_calculator():
     assert task.check(3, [-35 * np.sin(q3) * rate, 0, -35 * np.cos(q3) * rate]).ok
     result = task.check(3, [-0.2443, 0.0, -23.33])
     assert result.diagnosis == "degrees_in_sin" and "degree mode" in result.hints[0]
+
+
+def test_the_drop_of_the_scope_exercise_falls_on_a_sample_for_every_student():
+    """Exercise 5 reads the backward difference at t = T: T must be a whole number of
+    samples dt (T = 2.5 s with dt = 0.2 s would put no sample on the drop)."""
+    for k in range(200):
+        n = rc.Assignment(LAB, f"s{k:05d}").numbers
+        samples = n["T"] / n["dt5"]
+        assert samples == pytest.approx(round(samples), abs=1e-9), (k, n["T"], n["dt5"])

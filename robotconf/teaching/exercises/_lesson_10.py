@@ -212,8 +212,12 @@ def _acceleration(n: Any) -> np.ndarray:
     return np.asarray(run.acceleration[int(round(n["t4"] / 1e-3)), run.points.index("EE")])
 
 
-def _dt5(variant: Any, _: Any) -> dict[str, Any]:
-    return {"dt5": variant.choice("dt5", [0.05, 0.1, 0.2])}
+def _dt5(variant: Any, earlier: Any) -> dict[str, Any]:
+    # The drop at t = T must fall on a sample (T = 2.5 s with dt = 0.2 s has none there).
+    steps = [
+        dt for dt in (0.05, 0.1, 0.2) if abs(earlier["T"] / dt - round(earlier["T"] / dt)) < 1e-9
+    ]
+    return {"dt5": variant.choice("dt5", steps)}
 
 
 def _scope(n: Any, method: str) -> float:
