@@ -317,6 +317,22 @@ MISTAKES = {
         [3],
         "check the constant in θ2",
     ),
+    # one twist typed in degrees among radian offsets: only that angle is read as degrees
+    "a twist in degrees": (
+        CYLINDRICAL,
+        [("q1", 0, 0, 0), ("pi/2", "q2 + 20", 0, 90), (0, "q3 + 10", 0, 0)],
+        "degrees",
+        [3],
+        "Your angles look like degrees",
+    ),
+    # every link length negative: the arm turned by a half turn, but the slip is the sign
+    "lengths negative": (
+        PLANAR,
+        [("q1", 0, -40, 0), ("q2", 0, -30, 0)],
+        "a_sign",
+        [2],
+        "Rows 1 and 2: check the sign of a1 and a2",
+    ),
     "modified tool forgotten": (
         PAPER,
         PAPER_MOD,

@@ -15,8 +15,9 @@ diagnosis code a teacher would name (the codes and their meanings:
 ``DH_DIAGNOSES``, ``IK_DIAGNOSES``, ``PROFILE_DIAGNOSES``, ``EXERCISE_SLIPS``), or
 ``None`` when no single slip explains it. ``blind.py`` is the first held-out family
 (lessons 1–8). A held-out module whose cases the checks were then fixed against is
-in-sample from then on: renamed (``lessons_9_12_blind.py`` and ``lessons_9_12_second.py``,
-each measured held-out once before its fixes) with that history in its docstring.
+in-sample from then on: renamed (``lessons_9_12_blind.py``, ``lessons_9_12_second.py``
+and ``lessons_9_12_third.py``, each measured held-out once before its fixes) with that
+history in its docstring.
 """
 
 from __future__ import annotations
@@ -36,6 +37,7 @@ from . import (
     lessons_9_12,
     lessons_9_12_blind,
     lessons_9_12_second,
+    lessons_9_12_third,
     offsets,
     right_answers,
     signs,
@@ -74,6 +76,7 @@ CASES: list[Case] = [
     *lessons_9_12.CASES,
     *lessons_9_12_blind.CASES,
     *lessons_9_12_second.CASES,
+    *lessons_9_12_third.CASES,
     *(case for name in held_out_modules() for case in _held_out(name)),
 ]
 del blind  # read through held_out_modules

@@ -20,6 +20,7 @@ __all__ = [
     "exchanged_hint",
     "generic_hint",
     "joint_type_hint",
+    "negative_lengths_hint",
     "repair_hint",
     "row_count_hint",
     "swapped_columns_hint",
@@ -185,6 +186,22 @@ def convention_hint(asked: str, other: str, whole: bool) -> str:
         f"α_i of the link after joint i; in a modified table row i holds a_(i-1) and "
         f"α_(i-1) of the link before it, and the last link's length goes into the tool "
         f"point."
+    )
+
+
+def negative_lengths_hint(rows: list[int], convention: str) -> str:
+    """Several rows' a negative (1-based rows): the lengths' sign, not the frames.
+
+    >>> negative_lengths_hint([1, 2], "standard")  # doctest: +ELLIPSIS
+    'Rows 1 and 2: check the sign of a1 and a2: ...'
+    """
+    names = [_names(r - 1, convention).a for r in rows]
+    listed = ", ".join(str(r) for r in rows[:-1]) + f" and {rows[-1]}"
+    fields = ", ".join(names[:-1]) + f" and {names[-1]}"
+    return (
+        f"Rows {listed}: check the sign of {fields}: a is the distance along the common "
+        "normal x, from one joint axis to the next, and your x axes point that way — so "
+        "the lengths are positive."
     )
 
 

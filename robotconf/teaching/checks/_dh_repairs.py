@@ -23,6 +23,7 @@ from ._dh_hints import (
     degrees_hint,
     exchanged_hint,
     generic_hint,
+    negative_lengths_hint,
     repair_hint,
     swapped_columns_hint,
 )
@@ -110,6 +111,15 @@ def compare(
     return Match(wrong, bool(wrong) and bool(flipped[wrong[0]]), gap <= ref.tol * ref.scale)
 
 
+def _looks_like_degrees(angle: float) -> bool:
+    return abs(angle) > 2 * np.pi + 1e-9
+
+
+def _radians(angle: float) -> float:
+    """An angle too large to be radians, read as degrees; others kept."""
+    return float(np.radians(angle)) if _looks_like_degrees(angle) else angle
+
+
 def _with(row: DHRow, **changes: float) -> DHRow:
     theta, d, a, alpha, joint = row
     new = {"theta": theta, "d": d, "a": a, "alpha": alpha, **changes}
@@ -154,11 +164,20 @@ def diagnose(
     swapped = compare(ref, rows, other, end_effector)
     if swapped is not None and (swapped.ok or (swapped.axes_ok and not own.axes_ok)):
         return "convention", convention_hint(convention, other, swapped.ok)
-    if any(abs(row[0]) > 2 * np.pi + 1e-9 or abs(row[3]) > 2 * np.pi + 1e-9 for row in rows):
-        radians = tuple(_with(r, theta=np.radians(r[0]), alpha=np.radians(r[3])) for r in rows)
-        match = compare(ref, radians, convention, end_effector)
+    if any(_looks_like_degrees(row[0]) or _looks_like_degrees(row[3]) for row in rows):
+        # every angle in degrees, or only those too large for radians (a 90 among pi/2s)
+        every = tuple(_with(r, theta=np.radians(r[0]), alpha=np.radians(r[3])) for r in rows)
+        some = tuple(_with(r, theta=_radians(r[0]), alpha=_radians(r[3])) for r in rows)
+        for radians in (every, some):
+            match = compare(ref, radians, convention, end_effector)
+            if match is not None and match.ok:
+                return "degrees", degrees_hint()
+    negative = [r for r, row in enumerate(rows) if row[2] < 0]
+    if len(negative) > 1:  # every link length negative: one sign slip, not a turned frame
+        flipped = tuple(_with(row, a=abs(row[2])) for row in rows)
+        match = compare(ref, flipped, convention, end_effector)
         if match is not None and match.ok:
-            return "degrees", degrees_hint()
+            return "a_sign", negative_lengths_hint([r + 1 for r in negative], convention)
     # Joint j's axis is placed by rows 1..j-1 (standard) or 1..j (modified): a one-row
     # mistake that misplaces the first wrong axis sits in one of those rows.
     suspects = len(rows)
