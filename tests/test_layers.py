@@ -48,14 +48,14 @@ SHARED_BASE = ("robotconf._errors", "robotconf._validation", "robotconf._budget"
 #: layer when called (a robot writes its file, a motion draws itself), named
 #: ``module:function`` for the function that holds the import.
 LAZY_ACCESSORS = {
-    "robotconf.kinematics._robot:to_json": "robotconf.io",
-    "robotconf.kinematics._robot:from_json": "robotconf.io",
-    "robotconf.kinematics._robot:save": "robotconf.io",
-    "robotconf.kinematics._robot:to_urdf": "robotconf.io",
+    "robotconf.kinematics.robot._robot:to_json": "robotconf.io",
+    "robotconf.kinematics.robot._robot:from_json": "robotconf.io",
+    "robotconf.kinematics.robot._robot:save": "robotconf.io",
+    "robotconf.kinematics.robot._robot:to_urdf": "robotconf.io",
     "robotconf.cell._cell:to_json": "robotconf.io",
     "robotconf.cell._cell:save": "robotconf.io",
-    "robotconf.kinematics._workspace:plot": "robotconf.plots",
-    "robotconf.kinematics._workspace:view": "robotconf.scene",
+    "robotconf.kinematics.quantities._workspace:plot": "robotconf.plots",
+    "robotconf.kinematics.quantities._workspace:view": "robotconf.scene",
     "robotconf.cell._cell:view": "robotconf.scene",
     "robotconf.motion._motion:plot": "robotconf.plots",
 }
@@ -172,7 +172,7 @@ def _where(imp: Import) -> str:
 
 def test_the_scan_sees_the_package():
     modules = {imp.source for imp in ALL_IMPORTS}
-    assert {"robotconf.kinematics._robot", "robotconf.panel._configurator"} <= modules
+    assert {"robotconf.kinematics.robot._robot", "robotconf.panel._configurator"} <= modules
     assert len(INTERNAL) > 200
 
 

@@ -56,9 +56,9 @@ def test_a_q_drag_moves_the_robot_and_draws_one_snapshot():
 
 @pytest.mark.parametrize("tab", ["motion", "program"])
 def test_a_q_step_checks_q_once_and_runs_the_kernel_once(monkeypatch, tab):
-    import robotconf.kinematics._kernel as kernel
-    import robotconf.kinematics._robot as robot_module
-    import robotconf.kinematics._snapshot as snapshot
+    import robotconf.kinematics.kernel._kernel as kernel
+    import robotconf.kinematics.robot._robot as robot_module
+    import robotconf.kinematics.robot._snapshot as snapshot
 
     panel = make_panel()
     panel.apply(act.SelectTab(tab))

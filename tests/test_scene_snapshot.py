@@ -11,7 +11,8 @@ import numpy as np
 import pytest
 
 import robotconf as rc
-from robotconf.kinematics import _kernel, _snapshot
+from robotconf.kinematics.kernel import _kernel
+from robotconf.kinematics.robot import _snapshot
 from robotconf.scene import ROOT, RecordingChannel, RobotDrawing, Scene
 
 ROBOT_PATH = f"{ROOT}/robot"

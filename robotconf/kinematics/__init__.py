@@ -1,6 +1,17 @@
 """Kinematics: modules and DH links, robots, the vectorized kernel, Jacobians, workspaces.
 
-This folder is the numpy core. Everything here imports numpy only.
+This folder is the numpy core. Everything here imports numpy only. Its map, one concept
+per subfolder (lower rows import only rows above them, but for type hints and calls made
+when a method runs):
+
+===============  =======================================================================
+``conventions``  conventions as data; bounds, names and rigid poses every input obeys
+``kernel``       one link as ``P·Screw(q)·Q``; chains composed over samples in blocks
+``links``        the paper's modules, DH rows, their matrices and joint ranges
+``robot``        the robot (immutable chain plus end effector) and its one-pass snapshot
+``quantities``   Jacobians, joint axes, labelled points, rotation vectors, the workspace
+``dh``           DH rows ⇄ modules, standard ⇄ modified DH
+===============  =======================================================================
 
 Robots and links
     :class:`Robot`, :class:`RobotSnapshot` (``robot.at(q)``: one pass, every frame),
@@ -30,8 +41,7 @@ Building blocks (the kernel and the component-major helpers the motion layer use
 array([2., 0., 1.])
 """
 
-from ._bounds import MAX_MODULES, MAX_PARAMETER, check_parameter, check_parameter_vector
-from ._conventions import (
+from .conventions import (
     AXIS_NAMES,
     DH_CONVENTIONS,
     DH_FACTORS,
@@ -44,33 +54,30 @@ from ._conventions import (
     JOINT_TYPES,
     JOINT_UNITS,
     KIND_ALIASES,
+    MAX_MODULES,
+    MAX_NAME_CHARS,
+    MAX_PARAMETER,
     MODULE_CODES,
     MODULE_KINDS,
     MODULE_OFFSETS,
+    POSE_ALLOWED,
+    POSE_TOLERANCE,
     ROTATION_KINDS,
     TRANSLATION_KINDS,
+    check_module_names,
+    check_name,
+    check_parameter,
+    check_parameter_vector,
+    check_rigid_pose,
     dh_formula,
     kind_axis,
     kind_joint_type,
     kind_label,
 )
-from ._dh import DHLink, check_convention, dh_link_from_row, dh_matrix
-from ._dh_convention_change import convert_dh, reinterpret_dh
-from ._dh_conversion import dh_to_modules, modules_to_dh
-from ._geometry import LinkGeometry
-from ._jacobian import (
-    JointScrew,
-    cross_components,
-    ee_position,
-    jacobian,
-    joint_screws,
-    point_names,
-    pose_components,
-    rotate_components,
-)
-from ._joint_axes import JointAxes, joint_axes
-from ._kernel import (
+from .dh import convert_dh, dh_to_modules, modules_to_dh, reinterpret_dh
+from .kernel import (
     BLOCK_SIZE,
+    LinkGeometry,
     chain_origins,
     chain_point,
     chain_point_pose,
@@ -79,22 +86,50 @@ from ._kernel import (
     kernel_bytes,
     link_matrices,
 )
-from ._limits import chain_length, chain_limits, check_limits, default_limits
-from ._link import Link
-from ._module import Module, kind_name, transfer_matrix
-from ._names import MAX_NAME_CHARS, check_module_names, check_name
-from ._points import END_EFFECTOR_LABEL, RobotPoint, format_point, robot_points
-from ._pose_check import POSE_ALLOWED, POSE_TOLERANCE, check_rigid_pose
-from ._robot import Robot, characteristic_length
-from ._rotations import matrix_from_rpy, rotation_matrix, rotation_vector, rpy_from_matrix
-from ._snapshot import RobotSnapshot
-from ._workspace import (
+from .links import (
+    DHLink,
+    Link,
+    Module,
+    chain_length,
+    chain_limits,
+    check_convention,
+    check_limits,
+    default_limits,
+    dh_link_from_row,
+    dh_matrix,
+    kind_name,
+    transfer_matrix,
+)
+from .quantities import (
     MAX_WORKSPACE_SAMPLES,
     WORKSPACE_METHODS,
+    JointScrew,
     Workspace,
+    cross_components,
+    ee_position,
     grid_size,
+    jacobian,
+    joint_axes,
+    joint_screws,
+    matrix_from_rpy,
+    point_names,
+    pose_components,
+    robot_points,
+    rotate_components,
+    rotation_matrix,
+    rotation_vector,
+    rpy_from_matrix,
     workspace,
     workspace_bytes,
+)
+from .robot import (
+    END_EFFECTOR_LABEL,
+    JointAxes,
+    Robot,
+    RobotPoint,
+    RobotSnapshot,
+    characteristic_length,
+    format_point,
 )
 
 __all__ = [
@@ -114,7 +149,7 @@ __all__ = [
     "chain_length",
     "chain_limits",
     "default_limits",
-    # bounds and names (docs: robotconf.kinematics._bounds, ._names)
+    # bounds and names (docs: robotconf.kinematics.conventions)
     "MAX_PARAMETER",
     "POSE_TOLERANCE",
     "POSE_ALLOWED",

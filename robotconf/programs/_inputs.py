@@ -1,6 +1,6 @@
 """Validators for the fields of moves and programs; each error names its field.
 
-A program's numbers are bounded like a robot's (:mod:`robotconf.kinematics._bounds`), so
+A program's numbers are bounded like a robot's (:mod:`robotconf.kinematics.conventions._bounds`), so
 that planning can neither overflow nor divide by zero:
 
 - targets, via points, pose translations and PTP coordinates: finite, ``|x| ≤``

@@ -8,14 +8,20 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import InvalidInputError
-from .._validation import check_finite_number, one_line
-from ._bounds import check_parameter
-from ._conventions import DH_CONVENTIONS, DH_PARAMETERS, JOINT_LETTERS, JOINT_OF_LETTER, dh_formula
-from ._geometry import LinkGeometry
+from ..._errors import InvalidInputError
+from ..._validation import check_finite_number, one_line
+from ..conventions._bounds import check_parameter
+from ..conventions._conventions import (
+    DH_CONVENTIONS,
+    DH_PARAMETERS,
+    JOINT_LETTERS,
+    JOINT_OF_LETTER,
+    dh_formula,
+)
+from ..conventions._names import check_name
+from ..kernel._geometry import LinkGeometry
 from ._limits import check_limits
 from ._link import Link
-from ._names import check_name
 
 __all__ = ["DHLink", "dh_matrix", "dh_link_from_row", "check_convention"]
 

@@ -7,11 +7,11 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import InvalidInputError
-from .._validation import as_float_array, check_finite_number, check_joint_values, one_line
-from ._conventions import DH_LENGTHS, JOINT_LETTERS, JOINT_UNITS, MODULE_OFFSETS
-from ._geometry import LinkGeometry
-from ._kernel import link_matrices
+from ..._errors import InvalidInputError
+from ..._validation import as_float_array, check_finite_number, check_joint_values, one_line
+from ..conventions._conventions import DH_LENGTHS, JOINT_LETTERS, JOINT_UNITS, MODULE_OFFSETS
+from ..kernel._geometry import LinkGeometry
+from ..kernel._kernel import link_matrices
 
 __all__ = ["Link"]
 

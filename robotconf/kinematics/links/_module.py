@@ -7,10 +7,10 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import InvalidInputError
-from .._validation import one_line
-from ._bounds import check_parameter, check_parameter_vector
-from ._conventions import (
+from ..._errors import InvalidInputError
+from ..._validation import one_line
+from ..conventions._bounds import check_parameter, check_parameter_vector
+from ..conventions._conventions import (
     AXIS_NAMES,
     JOINT_LETTERS,
     KIND_ALIASES,
@@ -20,10 +20,10 @@ from ._conventions import (
     kind_axis,
     kind_joint_type,
 )
-from ._geometry import LinkGeometry
+from ..conventions._names import check_name
+from ..kernel._geometry import LinkGeometry
 from ._limits import check_link_limits
 from ._link import Link
-from ._names import check_name
 
 __all__ = ["Module", "kind_name", "transfer_matrix"]
 

@@ -22,13 +22,13 @@ from typing import TYPE_CHECKING, Any, NamedTuple
 
 import numpy as np
 
-from .._budget import check_finite_result, check_memory
-from .._validation import check_joint_values, one_line
-from ._conventions import JOINT_OF_LETTER
-from ._kernel import kernel_bytes
+from ..._budget import check_finite_result, check_memory
+from ..._validation import check_joint_values, one_line
+from ..conventions._conventions import JOINT_OF_LETTER
+from ..kernel._kernel import kernel_bytes
 
 if TYPE_CHECKING:
-    from ._robot import Robot
+    from ..robot._robot import Robot
 
 __all__ = [
     "jacobian",

@@ -24,8 +24,8 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import InvalidInputError
-from ._conventions import (
+from ..._errors import InvalidInputError
+from ..conventions._conventions import (
     AXIS_NAMES,
     DH_CONVENTIONS,
     DH_FACTORS,
@@ -36,9 +36,9 @@ from ._conventions import (
     kind_axis,
     kind_joint_type,
 )
-from ._dh import DHLink, check_convention, dh_link_from_row
-from ._module import Module
-from ._robot import Robot
+from ..links._dh import DHLink, check_convention, dh_link_from_row
+from ..links._module import Module
+from ..robot._robot import Robot
 
 __all__ = ["dh_to_modules", "modules_to_dh"]
 

@@ -21,7 +21,7 @@ Why every block checks its positions
 ------------------------------------
 Rotations only ever multiply by cosines and sines, so they stay finite; a position can
 leave the float range only when a prismatic coordinate near ``1e308`` slides a frame
-(link constants are at most ``1e150``, see :mod:`robotconf.kinematics._bounds`). Once a
+(link constants are at most ``1e150``, see :mod:`robotconf.kinematics.conventions._bounds`). Once a
 position is inf or NaN, every later frame's position is too, so one check of the last
 frame per block (3 numbers per sample, while they are still in cache) catches every
 overflow. Only then is the culprit searched: the first frame of the first bad sample,
@@ -34,7 +34,7 @@ from collections.abc import Callable, Iterator, Sequence
 
 import numpy as np
 
-from .._errors import InvalidInputError
+from ..._errors import InvalidInputError
 from ._geometry import LinkGeometry
 
 __all__ = [

@@ -13,9 +13,9 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .._errors import InvalidInputError
-from .._validation import check_vector3, one_line
-from ._bounds import MAX_PARAMETER, check_parameter
+from ..._errors import InvalidInputError
+from ..._validation import check_vector3, one_line
+from ..conventions._bounds import MAX_PARAMETER, check_parameter
 
 if TYPE_CHECKING:
     from ._link import Link

@@ -16,8 +16,8 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import InvalidInputError
-from .._validation import as_float_array, one_line
+from ..._errors import InvalidInputError
+from ..._validation import as_float_array, one_line
 
 __all__ = ["rotation_vector", "rotation_matrix", "rpy_from_matrix", "matrix_from_rpy"]
 

@@ -11,12 +11,12 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .._validation import check_joint_values
+from ..._validation import check_joint_values
+from ..robot._named_results import JointAxes
 from ._jacobian import JointScrew, joint_screws, pose_components
-from ._named_results import JointAxes
 
 if TYPE_CHECKING:
-    from ._robot import Robot
+    from ..robot._robot import Robot
 
 __all__ = ["JointAxes", "joint_axes", "axes_from_screws"]
 

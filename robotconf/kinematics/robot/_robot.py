@@ -9,13 +9,13 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .._budget import check_memory
-from .._errors import InvalidInputError
-from .._validation import check_configuration, check_integer, check_joint_values, one_line
-from ._bounds import MAX_MODULES, MAX_PARAMETER, check_parameter_vector
-from ._dh import check_convention, dh_link_from_row
-from ._geometry import LinkGeometry
-from ._kernel import (
+from ..._budget import check_memory
+from ..._errors import InvalidInputError
+from ..._validation import check_configuration, check_integer, check_joint_values, one_line
+from ..conventions._bounds import MAX_MODULES, MAX_PARAMETER, check_parameter_vector
+from ..conventions._names import check_module_names, check_name
+from ..kernel._geometry import LinkGeometry
+from ..kernel._kernel import (
     chain_origins,
     chain_point,
     chain_point_pose,
@@ -23,13 +23,13 @@ from ._kernel import (
     kernel_bytes,
     link_matrices,
 )
-from ._limits import chain_length, chain_limits
-from ._link import Link
-from ._names import check_module_names, check_name
+from ..links._dh import check_convention, dh_link_from_row
+from ..links._limits import chain_length, chain_limits
+from ..links._link import Link
 from ._snapshot import RobotSnapshot, chain_snapshot
 
 if TYPE_CHECKING:
-    from ..signals import Signal
+    from ...signals import Signal
 
 __all__ = ["Robot", "characteristic_length"]
 
@@ -657,7 +657,7 @@ class Robot:
         >>> arm.jacobian([0.0])[:, 0]
         array([0., 2., 0., 0., 0., 1.])
         """
-        from ._jacobian import jacobian  # the Jacobian module takes a Robot
+        from ..quantities._jacobian import jacobian  # the Jacobian module takes a Robot
 
         return jacobian(self, q, frame)
 
@@ -746,7 +746,7 @@ class Robot:
         >>> Robot.from_json(robot.to_json()) == robot
         True
         """
-        from ..io import Setup
+        from ...io import Setup
 
         return Setup(self, signals or {}, simulation).to_json(indent)
 
@@ -763,7 +763,7 @@ class Robot:
             Module('Rz', limits=(-1.0, 1.0)),
         ], end_effector=(2.0, 0.0, 0.0))
         """
-        from ..io import Setup
+        from ...io import Setup
 
         return Setup.from_json(text).robot
 
@@ -786,7 +786,7 @@ class Robot:
         ...     load(robot.save(folder + "/arm.json")) == robot
         True
         """
-        from ..io import Setup
+        from ...io import Setup
 
         return Setup(self, signals or {}, simulation).save(path)
 
@@ -797,7 +797,7 @@ class Robot:
         >>> "<joint name=\\"q1\\" type=\\"revolute\\">" in Robot([Module("Rz")]).to_urdf()
         True
         """
-        from ..io import to_urdf
+        from ...io import to_urdf
 
         return to_urdf(self, name, **options)
 

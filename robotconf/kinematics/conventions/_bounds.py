@@ -22,8 +22,8 @@ from __future__ import annotations
 
 from typing import Any
 
-from .._errors import InvalidInputError
-from .._validation import check_finite_number, check_vector3
+from ..._errors import InvalidInputError
+from ..._validation import check_finite_number, check_vector3
 
 __all__ = ["MAX_PARAMETER", "MAX_MODULES", "check_parameter", "check_parameter_vector"]
 

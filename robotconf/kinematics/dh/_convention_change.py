@@ -17,9 +17,9 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import InvalidInputError
-from ._dh import DHLink, check_convention
-from ._robot import Robot
+from ..._errors import InvalidInputError
+from ..links._dh import DHLink, check_convention
+from ..robot._robot import Robot
 
 __all__ = ["convert_dh", "reinterpret_dh"]
 

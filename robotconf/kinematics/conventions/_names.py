@@ -13,8 +13,8 @@ from __future__ import annotations
 from collections.abc import Sequence
 from typing import Any
 
-from .._errors import InvalidInputError
-from .._validation import one_line
+from ..._errors import InvalidInputError
+from ..._validation import one_line
 
 __all__ = ["MAX_NAME_CHARS", "check_name", "check_module_names"]
 

@@ -18,10 +18,10 @@ from typing import Any
 
 import numpy as np
 
-from ._geometry import LinkGeometry
-from ._kernel import _LAST_ROW as LAST_ROW
-from ._kernel import _run as run_chain
-from ._kernel import _translate as translate_state
+from ..kernel._geometry import LinkGeometry
+from ..kernel._kernel import _LAST_ROW as LAST_ROW
+from ..kernel._kernel import _run as run_chain
+from ..kernel._kernel import _translate as translate_state
 from ._named_results import END_EFFECTOR_LABEL, JointAxes, RobotPoint
 
 __all__ = ["RobotSnapshot", "chain_snapshot"]
@@ -148,8 +148,8 @@ class RobotSnapshot:
     def joint_axes(self) -> JointAxes:
         """Every joint's axis, read off the frame poses (no kernel pass)."""
         if self._axes is None:
-            from ._jacobian import joint_screws
-            from ._joint_axes import axes_from_screws
+            from ..quantities._jacobian import joint_screws
+            from ..quantities._joint_axes import axes_from_screws
 
             components = self.frame_poses[:, :3, :, np.newaxis]  # (n, 3, 4, T=1)
             screws = joint_screws(self.robot, components)

@@ -13,8 +13,8 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import InvalidInputError
-from .._validation import as_float_array, one_line
+from ..._errors import InvalidInputError
+from ..._validation import as_float_array, one_line
 from ._bounds import MAX_PARAMETER
 
 __all__ = ["POSE_TOLERANCE", "POSE_ALLOWED", "check_rigid_pose"]

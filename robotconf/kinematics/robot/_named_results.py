@@ -10,8 +10,8 @@ from typing import Any, NamedTuple
 
 import numpy as np
 
-from .._errors import InvalidInputError
-from .._validation import check_integer, check_vector3, one_line
+from ..._errors import InvalidInputError
+from ..._validation import check_integer, check_vector3, one_line
 
 __all__ = ["RobotPoint", "JointAxes", "format_point", "END_EFFECTOR_LABEL"]
 

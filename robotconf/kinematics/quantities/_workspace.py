@@ -18,17 +18,17 @@ from typing import TYPE_CHECKING, Any
 
 import numpy as np
 
-from .._budget import check_memory
-from .._errors import InvalidInputError
-from .._validation import as_float_array, check_flag, check_integer, check_vector3, one_line
-from ._bounds import MAX_PARAMETER
-from ._kernel import kernel_bytes
+from ..._budget import check_memory
+from ..._errors import InvalidInputError
+from ..._validation import as_float_array, check_flag, check_integer, check_vector3, one_line
+from ..conventions._bounds import MAX_PARAMETER
+from ..kernel._kernel import kernel_bytes
 
 if TYPE_CHECKING:  # pragma: no cover
     import pandas as pd
     from matplotlib.figure import Figure
 
-    from ._robot import Robot
+    from ..robot._robot import Robot
 
 __all__ = [
     "workspace",
@@ -276,7 +276,7 @@ def workspace(
     >>> bool(r.min() >= 1 - 1e-12 and r.max() <= 3 + 1e-12), ws.points.shape
     (True, (10000, 3))
     """
-    from ._robot import Robot
+    from ..robot._robot import Robot
 
     if not isinstance(robot, Robot):
         raise InvalidInputError("robot", robot, "a robotconf Robot", problem="not a robot:")
@@ -433,7 +433,7 @@ class Workspace:
 
     def plot(self, **kwargs: Any) -> Figure:
         """3D scatter plus the XY, XZ and YZ projections (see ``_workspace_plot``)."""
-        from ..plots import plot_workspace
+        from ...plots import plot_workspace
 
         return plot_workspace(self, **kwargs)
 
@@ -475,7 +475,7 @@ class Workspace:
         if colors.ndim == 2:
             colors = colors[::step]
         if scene is None:
-            from ..scene import view
+            from ...scene import view
 
             scene = view(self.robot)
         scene.add_point_cloud(name, self.points[::step], color=colors, size=size)

@@ -9,12 +9,12 @@ from __future__ import annotations
 
 from typing import TYPE_CHECKING, Any
 
-from .._errors import InvalidInputError
-from .._validation import check_configuration
-from ._named_results import END_EFFECTOR_LABEL, RobotPoint, format_point
+from ..._errors import InvalidInputError
+from ..._validation import check_configuration
+from ..robot._named_results import END_EFFECTOR_LABEL, RobotPoint, format_point
 
 if TYPE_CHECKING:  # pragma: no cover
-    from ._robot import Robot
+    from ..robot._robot import Robot
 
 __all__ = ["RobotPoint", "robot_points", "format_point", "END_EFFECTOR_LABEL"]
 
@@ -54,7 +54,7 @@ def robot_points(robot: Robot, q: Any = None) -> list[RobotPoint]:
     >>> name, xyz
     ('EE', array([70.,  0., 20.]))
     """
-    from ._robot import Robot
+    from ..robot._robot import Robot
 
     if not isinstance(robot, Robot):
         raise InvalidInputError("robot", robot, "a robotconf Robot", problem="not a robot:")
