@@ -18,10 +18,10 @@ from typing import Any
 
 import numpy as np
 
+from ..kernel._block import _translate as translate_state
 from ..kernel._geometry import LinkGeometry
 from ..kernel._kernel import _LAST_ROW as LAST_ROW
 from ..kernel._kernel import _run as run_chain
-from ..kernel._kernel import _translate as translate_state
 from ._named_results import END_EFFECTOR_LABEL, JointAxes, RobotPoint
 
 __all__ = ["RobotSnapshot", "chain_snapshot"]
