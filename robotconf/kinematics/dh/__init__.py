@@ -14,6 +14,7 @@ Standard ⇄ modified DH
 """
 
 from ._convention_change import convert_dh, reinterpret_dh
-from ._to_modules import dh_to_modules, modules_to_dh
+from ._from_modules import modules_to_dh
+from ._to_modules import dh_to_modules
 
 __all__ = ["dh_to_modules", "modules_to_dh", "convert_dh", "reinterpret_dh"]
