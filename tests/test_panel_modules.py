@@ -57,6 +57,7 @@ def test_a_q_drag_moves_the_robot_and_draws_one_snapshot():
 @pytest.mark.parametrize("tab", ["motion", "program"])
 def test_a_q_step_checks_q_once_and_runs_the_kernel_once(monkeypatch, tab):
     import robotconf.kinematics.kernel._kernel as kernel
+    import robotconf.kinematics.robot._chain as chain_module
     import robotconf.kinematics.robot._robot as robot_module
     import robotconf.kinematics.robot._snapshot as snapshot
 
@@ -74,6 +75,8 @@ def test_a_q_step_checks_q_once_and_runs_the_kernel_once(monkeypatch, tab):
 
     check = robot_module.check_configuration
     monkeypatch.setattr(robot_module, "check_configuration", counted("checks", check))
+    chain_check = chain_module.check_configuration
+    monkeypatch.setattr(chain_module, "check_configuration", counted("checks", chain_check))
     monkeypatch.setattr(kernel, "_run", counted("passes", kernel._run))
     monkeypatch.setattr(snapshot, "run_chain", counted("passes", snapshot.run_chain))
     ui(panel, "modules[1].q").drag(-90.0)
