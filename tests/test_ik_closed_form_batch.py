@@ -17,7 +17,7 @@ import pytest
 import robotconf as rc
 from robotconf import InvalidInputError
 from robotconf.inverse_kinematics import IKSolutionSets, ik_all, ik_all_many
-from robotconf.inverse_kinematics._recognize import closed_form_structure
+from robotconf.inverse_kinematics.closed_form._recognize import closed_form_structure
 
 from .test_ik_closed_form import _random_planar, _random_puma, _random_ur
 

@@ -14,15 +14,15 @@ import pytest
 
 from robotconf import InvalidInputError, dh_to_modules, set_memory_budget
 from robotconf.inverse_kinematics import IKResult, ik
-from robotconf.inverse_kinematics import _search as search_module
-from robotconf.inverse_kinematics._lm import CONVERGED, STALLED, solve
-from robotconf.inverse_kinematics._numeric import _verify
-from robotconf.inverse_kinematics._problem import Problem, make_problem
-from robotconf.inverse_kinematics._reach import reach_shell
-from robotconf.inverse_kinematics._reasons import fit_into_limits
-from robotconf.inverse_kinematics._rotation import rotation_vector_last
-from robotconf.inverse_kinematics._search import Search, search
-from robotconf.inverse_kinematics._targets import check_mask, check_targets
+from robotconf.inverse_kinematics.model._problem import Problem, make_problem
+from robotconf.inverse_kinematics.model._reach import reach_shell
+from robotconf.inverse_kinematics.model._rotation import rotation_vector_last
+from robotconf.inverse_kinematics.model._targets import check_mask, check_targets
+from robotconf.inverse_kinematics.numeric import _search as search_module
+from robotconf.inverse_kinematics.numeric._ik import _verify
+from robotconf.inverse_kinematics.numeric._lm import CONVERGED, STALLED, solve
+from robotconf.inverse_kinematics.numeric._reasons import fit_into_limits
+from robotconf.inverse_kinematics.numeric._search import Search, search
 from robotconf.kinematics import (
     Module,
     Robot,
@@ -271,7 +271,7 @@ def test_a_start_on_a_singular_saddle_is_left_along_its_negative_curvature() -> 
 def test_singular_configurations_name_their_joints() -> None:
     # The words behind the reason "singular" (what remains when the descent runs out of
     # steps at a singular configuration that is not a closest one).
-    from robotconf.inverse_kinematics._reasons import dependent_joints, singular_message
+    from robotconf.inverse_kinematics.numeric._reasons import dependent_joints, singular_message
 
     stretched = two_r()
     problem = make_problem(

@@ -1,4 +1,4 @@
-"""The column, shoulder and elbow of an elbow arm over T targets (:mod:`.._elbow`).
+"""The column, shoulder and elbow of an elbow arm over T targets (:mod:`..closed_form._elbow`).
 
 The 3R elbow arm is solved here; the 6R arms (:mod:`._wrist`) place their wrist with the
 same three functions.
@@ -10,11 +10,11 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._chain_axes import ChainAxes
-from .._elbow import offset_reason
-from .._subproblems import cross as cross_one
-from .._subproblems import perp as perp_one
-from .._subproblems import unit
+from ..closed_form._elbow import offset_reason
+from ..geometry._chain_axes import ChainAxes
+from ..geometry._subproblems import cross as cross_one
+from ..geometry._subproblems import perp as perp_one
+from ..geometry._subproblems import unit
 from ._branches import Branches, FirstReason, label_table
 from ._plane import PlaneMany, place_in_plane_many, plane_words
 from ._vectors import FREE, NONE, TANGENT, TWO, cross, dot, norm, perp, rotate, solve_cos_sin
@@ -119,7 +119,7 @@ def elbow_up(
 def solve_elbow_many(
     chain: ChainAxes, points: np.ndarray, rotation: np.ndarray | None, family: str
 ) -> Branches:
-    """:func:`~robotconf.inverse_kinematics._elbow.solve_elbow` for T targets (points
+    """:func:`~robotconf.inverse_kinematics.closed_form._elbow.solve_elbow` for T targets (points
     (T, 3)): four branches, shoulder slowest."""
     count = len(points)
     start = chain.home[:3, 3]

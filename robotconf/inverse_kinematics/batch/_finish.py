@@ -1,5 +1,5 @@
 """The branches of T targets written as the robot's coordinates and checked, as
-:func:`robotconf.inverse_kinematics._closed_form._finish` does for one target: wrapped,
+:func:`robotconf.inverse_kinematics.closed_form._ik_all._finish` does for one target: wrapped,
 verified by forward kinematics (all branches of all targets in one call), freed of
 duplicates, compared with the joint limits, and each target's reason worded.
 """
@@ -10,8 +10,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .._chain_axes import ChainAxes
-from .._closed_form import (
+from ..closed_form._ik_all import (
     SAME_TOL,
     VERIFY_TOL,
     failed_reason,
@@ -21,6 +20,7 @@ from .._closed_form import (
     within_limits,
     wrap_angles,
 )
+from ..geometry._chain_axes import ChainAxes
 from ._branches import Branches
 from ._vectors import norm
 

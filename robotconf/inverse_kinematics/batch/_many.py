@@ -16,9 +16,9 @@ from typing import Any
 import numpy as np
 
 from ..._budget import check_memory
-from .._chain_axes import ChainAxes
-from .._closed_form import ik_all
-from .._recognize import NotClosedForm, closed_form_structure, refuse
+from ..closed_form._ik_all import ik_all
+from ..closed_form._recognize import NotClosedForm, closed_form_structure, refuse
+from ..geometry._chain_axes import ChainAxes
 from ._arm import solve_elbow_many
 from ._branches import Branches
 from ._finish import Finished, finish_many

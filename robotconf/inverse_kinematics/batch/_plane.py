@@ -1,4 +1,4 @@
-"""Planar 2R/3R arms and SCARAs over T targets (:mod:`robotconf.inverse_kinematics._planar`).
+"""Planar 2R/3R arms and SCARAs over T targets (:mod:`..closed_form._planar`).
 
 :func:`place_in_plane_many` is the two-link problem of two parallel axes, which the elbow
 arms reuse for their shoulder and elbow; :func:`solve_planar_many` is the planar family.
@@ -11,8 +11,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._chain_axes import AxisJoint, ChainAxes
-from .._planar import (
+from ..closed_form._planar import (
     ELBOW_WORDS,
     any_perpendicular,
     free_last_note,
@@ -21,8 +20,9 @@ from .._planar import (
     plane_reason,
     tilted_reason,
 )
-from .._subproblems import cross as cross_one
-from .._subproblems import perp as perp_one
+from ..geometry._chain_axes import AxisJoint, ChainAxes
+from ..geometry._subproblems import cross as cross_one
+from ..geometry._subproblems import perp as perp_one
 from ._branches import Branches, FirstReason
 from ._vectors import (
     FREE,
@@ -75,7 +75,7 @@ def plane_words(plane: PlaneMany, what: str, from_axis: str) -> Callable[[int], 
 def place_in_plane_many(
     first: AxisJoint, second: AxisJoint, start: np.ndarray, target: np.ndarray
 ) -> PlaneMany:
-    """:func:`~robotconf.inverse_kinematics._planar.place_in_plane` for targets (T, 3).
+    """:func:`~robotconf.inverse_kinematics.closed_form._planar.place_in_plane` for targets (T, 3).
 
     >>> z = np.array([0.0, 0.0, 1.0])
     >>> a = AxisJoint(0, "R", np.zeros(3), z)
@@ -122,7 +122,7 @@ def place_in_plane_many(
 def solve_planar_many(
     chain: ChainAxes, points: np.ndarray, rotation: np.ndarray | None, family: str
 ) -> Branches:
-    """:func:`~robotconf.inverse_kinematics._planar.solve_planar` for T targets: points
+    """:func:`~robotconf.inverse_kinematics.closed_form._planar.solve_planar` for T targets: points
     (T, 3) and rotations (T, 3, 3) or None; two branches per target."""
     count = len(points)
     joints = chain.joints

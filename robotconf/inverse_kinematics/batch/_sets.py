@@ -7,7 +7,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .._solutions import IKSolutions
+from ..closed_form._solutions import IKSolutions
 
 __all__ = ["IKSolutionSets"]
 

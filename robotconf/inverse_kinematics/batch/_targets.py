@@ -13,9 +13,9 @@ import numpy as np
 
 from ..._errors import InvalidInputError
 from ..._validation import as_float_array, one_line
-from .._chain_axes import ChainAxes
-from .._recognize import GAP_TOL
-from .._subproblems import perp
+from ..closed_form._recognize import GAP_TOL
+from ..geometry._chain_axes import ChainAxes
+from ..geometry._subproblems import perp
 from ._vectors import rotations
 
 __all__ = ["TargetsMany", "read_targets_many"]

@@ -1,4 +1,4 @@
-"""The subproblems of :mod:`robotconf.inverse_kinematics._subproblems`, over T targets.
+"""The subproblems of :mod:`robotconf.inverse_kinematics.geometry._subproblems`, over T targets.
 
 Each function takes arrays whose last axis holds a 3-vector, shape (T, 3) (or one (3,)
 vector shared by all), and angles of shape (T,), and does per target what its one-target
@@ -16,9 +16,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .._subproblems import RATIO_TOL
-from .._subproblems import angle_about as angle_about_one
-from .._subproblems import cross as cross_one
+from ..geometry._subproblems import RATIO_TOL
+from ..geometry._subproblems import angle_about as angle_about_one
+from ..geometry._subproblems import cross as cross_one
 
 __all__ = [
     "TWO",
@@ -39,7 +39,7 @@ __all__ = [
     "remainder",
 ]
 
-#: Root kinds, as :class:`robotconf.inverse_kinematics._subproblems.Roots` names them.
+#: Root kinds, as :class:`robotconf.inverse_kinematics.geometry._subproblems.Roots` names them.
 TWO, TANGENT, NONE, FREE = range(4)
 
 
@@ -48,7 +48,7 @@ class RootsMany(NamedTuple):
 
     ``angles`` (T, 2): for kind :data:`TWO` both roots in the one-target order, for
     :data:`TANGENT` the double root twice; ``kind`` (T,) int; ``ratio`` (T,) as
-    :class:`~robotconf.inverse_kinematics._subproblems.Roots` has it.
+    :class:`~robotconf.inverse_kinematics.geometry._subproblems.Roots` has it.
     """
 
     angles: np.ndarray
@@ -172,7 +172,7 @@ def _angle(u: np.ndarray, v: np.ndarray) -> np.ndarray:
 
 def bend_angles(axis: np.ndarray, w: np.ndarray, x: np.ndarray, v: np.ndarray) -> RootsMany:
     """The wrist's middle joint per target: ``axis``, ``w``, ``x`` fixed (3,), ``v`` (T, 3)
-    (see :func:`robotconf.inverse_kinematics._subproblems.bend_angles`)."""
+    (see :func:`robotconf.inverse_kinematics.geometry._subproblems.bend_angles`)."""
     closest = angle_about_one(w, x, axis, 1e-12)
     start = 0.0 if closest is None else closest
     theta_a = math.atan2(float(np.linalg.norm(cross_one(w, axis))), float(w @ axis))

@@ -1,4 +1,5 @@
-"""The 6R arms over T targets: spherical wrist (:mod:`.._spherical_wrist`) and UR (:mod:`.._ur`).
+"""The 6R arms over T targets: spherical wrist (:mod:`..closed_form._spherical_wrist`) and
+UR (:mod:`..closed_form._ur`).
 
 Eight branches per target, in the one-target solvers' loop order: shoulder × elbow ×
 wrist for the spherical wrist, shoulder × wrist × elbow for the UR.
@@ -8,11 +9,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from .._chain_axes import ChainAxes, common_point
-from .._elbow import offset_reason
-from .._planar import any_perpendicular
-from .._spherical_wrist import WRIST_CANNOT_BEND
-from .._ur import closest_on
+from ..closed_form._elbow import offset_reason
+from ..closed_form._planar import any_perpendicular
+from ..closed_form._spherical_wrist import WRIST_CANNOT_BEND
+from ..closed_form._ur import closest_on
+from ..geometry._chain_axes import ChainAxes, common_point
 from ._arm import ELBOW_UP_DOWN, SHOULDER_WORDS, elbow_turns_many, elbow_up, shoulder_turns_many
 from ._branches import Branches, FirstReason, label_table
 from ._plane import plane_words

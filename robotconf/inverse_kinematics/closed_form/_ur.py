@@ -21,11 +21,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._chain_axes import ChainAxes, common_point
+from ..geometry._chain_axes import ChainAxes, common_point
+from ..geometry._subproblems import angle_about, bend_angles, cross, rotate, rotation
 from ._elbow import elbow_label, elbow_turns, shoulder_label, shoulder_turns
 from ._solutions import Candidates
 from ._spherical_wrist import rest_angle, singular_note, wrist_label
-from ._subproblems import angle_about, bend_angles, cross, rotate, rotation
 
 __all__ = ["solve_ur", "closest_on"]
 
@@ -63,7 +63,7 @@ def solve_ur(
     Examples
     --------
     >>> import robotconf as rc
-    >>> from robotconf.inverse_kinematics._chain_axes import chain_axes
+    >>> from robotconf.inverse_kinematics.geometry._chain_axes import chain_axes
     >>> ur5 = rc.preset("ur5")
     >>> pose = ur5.end_effector_pose([0.1, -1.2, 1.3, 0.4, 0.5, 0.6])
     >>> len(solve_ur(chain_axes(ur5), pose[:3, 3], pose[:3, :3], "").rows)

@@ -11,7 +11,7 @@ measured from a point of axis 1: for the point ``x₀`` that must reach ``x_t``,
 an equation ``a cos q₁ + b sin q₁ = c`` with two roots (the shoulder on either side), one
 (the point on the offset's circle) or none (closer to axis 1 than the shoulder offset
 allows). Turning the target back by ``−q₁`` leaves the two-link problem of axes 2 and 3
-(:func:`robotconf.inverse_kinematics._planar.place_in_plane`): up to 2 × 2 = 4 solutions. The PUMA's
+(:func:`._planar.place_in_plane`): up to 2 × 2 = 4 solutions. The PUMA's
 ``d₃`` and the UR's ``d₄`` are such offsets; for the paper's R_zR_yR_y it is 0.
 """
 
@@ -19,10 +19,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._chain_axes import ChainAxes
+from ..geometry._chain_axes import ChainAxes
+from ..geometry._subproblems import cross, perp, turn_to_level, unit
 from ._planar import PlanePlacement, place_in_plane
 from ._solutions import Candidates
-from ._subproblems import cross, perp, turn_to_level, unit
 
 __all__ = [
     "shoulder_turns",
@@ -157,7 +157,7 @@ def solve_elbow(
     """Every solution for a 3R elbow arm (position only): up to four.
 
     >>> import robotconf as rc
-    >>> from robotconf.inverse_kinematics._chain_axes import chain_axes
+    >>> from robotconf.inverse_kinematics.geometry._chain_axes import chain_axes
     >>> found = solve_elbow(chain_axes(rc.preset("paper")), np.array([0, 70, 20.0]), None, "")
     >>> [label for _, label in found.rows]
     ['shoulder front, elbow straight', 'shoulder back, elbow straight']

@@ -26,8 +26,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..model._problem import Problem
 from ._lm import CONVERGED, STALLED, Run, solve
-from ._problem import Problem
 from ._reasons import fit_into_limits
 
 __all__ = ["Search", "search", "nearest_first", "WAVE_RUNS", "OwnStarts"]

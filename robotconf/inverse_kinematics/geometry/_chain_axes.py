@@ -24,8 +24,8 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import InvalidInputError
-from ..kinematics import Robot, characteristic_length, joint_axes
+from ..._errors import InvalidInputError
+from ...kinematics import Robot, characteristic_length, joint_axes
 from ._subproblems import cross, perp, rotate, rotation
 
 _MOVING = ("revolute", "prismatic")

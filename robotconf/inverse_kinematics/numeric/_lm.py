@@ -1,7 +1,7 @@
 """Damped least squares (Levenberg–Marquardt) for a batch of runs at once.
 
 One step for every run still going, with ``J`` and ``e`` in the solver's units
-(:mod:`robotconf.inverse_kinematics._problem`) and ``E = ½‖e‖²``:
+(:mod:`robotconf.inverse_kinematics.model._problem`) and ``E = ½‖e‖²``:
 
 .. math::
 
@@ -23,7 +23,7 @@ without an accepted step or ``E`` has not halved over 5 steps (**stalled**: craw
 along a limit, at a saddle where no step helps, at rounding level, or on its way to a
 solution outside the ranges — another start is cheaper than following it), or after
 ``max_iterations`` steps. (:data:`STATIONARY` is the second-order descent's word for a
-local minimum, :mod:`robotconf.inverse_kinematics._closest`.)
+local minimum, :mod:`robotconf.inverse_kinematics.numeric._closest`.)
 Runs of one target may be ordered (its starts, tried in turn): a run is dropped
 (**superseded**) as soon as a run of the same target ordered before it has converged,
 since only the first converged run counts.
@@ -41,8 +41,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ._chain import Workspace
-from ._problem import FULL_TURN, Problem
+from ..model._chain import Workspace
+from ..model._problem import FULL_TURN, Problem
 
 __all__ = [
     "RUNNING",

@@ -6,7 +6,7 @@ three joints place it (:mod:`._elbow`: shoulder × elbow, up to four ways); the 
 has to make up the rotation ``R_rel = (R₁R₂R₃)ᵀ R_t R₀ᵀ = R₄R₅R₆``:
 
 - ``q₅`` bends axis 6 to the angle that ``R_rel w₆`` makes with axis 4 (turns about axis
-  4 keep that angle; :func:`._subproblems.bend_angles`): two roots, mirror images about
+  4 keep that angle; :func:`..geometry._subproblems.bend_angles`): two roots, mirror images about
   the position where axis 6 lines up with axis 4 (the wrist flip);
 - ``q₄`` turns ``R₅ w₆`` onto ``R_rel w₆`` about axis 4;
 - ``q₆`` is what remains, a turn about axis 6.
@@ -20,11 +20,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._chain_axes import ChainAxes, common_point
+from ..geometry._chain_axes import ChainAxes, common_point
+from ..geometry._subproblems import Roots, angle_about, bend_angles, rotate, rotation
 from ._elbow import elbow_label, elbow_turns, shoulder_label, shoulder_turns
 from ._planar import any_perpendicular
 from ._solutions import Candidates
-from ._subproblems import Roots, angle_about, bend_angles, rotate, rotation
 
 __all__ = [
     "solve_spherical_wrist",
@@ -90,7 +90,7 @@ def solve_spherical_wrist(
     Examples
     --------
     >>> import robotconf as rc
-    >>> from robotconf.inverse_kinematics._chain_axes import chain_axes
+    >>> from robotconf.inverse_kinematics.geometry._chain_axes import chain_axes
     >>> puma = rc.preset("puma560")
     >>> pose = puma.end_effector_pose([0.1, 0.2, -0.3, 0.4, 0.5, 0.6])
     >>> len(solve_spherical_wrist(chain_axes(puma), pose[:3, 3], pose[:3, :3], "").rows)

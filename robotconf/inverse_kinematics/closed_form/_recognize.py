@@ -1,6 +1,6 @@
 """Which closed form fits a robot, read from its joint axes (never from its name).
 
-The test is geometric, on the joint lines at q = 0 (:mod:`._chain_axes`), so a DH table
+The test is geometric, on the joint lines at q = 0 (:mod:`..geometry._chain_axes`), so a DH table
 in either convention and a chain of modules describing the same arm are recognized alike:
 
 ======================  ==================================================================
@@ -27,8 +27,8 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import InvalidInputError
-from ._chain_axes import (
+from ..._errors import InvalidInputError
+from ..geometry._chain_axes import (
     ChainAxes,
     axes_at,
     common_point,
@@ -36,7 +36,7 @@ from ._chain_axes import (
     misalignment,
     reference_configuration,
 )
-from ._subproblems import perp
+from ..geometry._subproblems import perp
 
 __all__ = [
     "FAMILIES",
@@ -175,7 +175,7 @@ def classify(chain: ChainAxes) -> str:
     """The family of a robot's joint lines; raises :class:`NotClosedForm` saying why not.
 
     >>> import robotconf as rc
-    >>> from robotconf.inverse_kinematics._chain_axes import chain_axes
+    >>> from robotconf.inverse_kinematics.geometry._chain_axes import chain_axes
     >>> classify(chain_axes(rc.preset("scara")))
     'SCARA'
     """

@@ -11,8 +11,8 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import InvalidInputError
-from .._validation import (
+from ..._errors import InvalidInputError
+from ..._validation import (
     as_float_array,
     check_finite_number,
     check_flag,

@@ -13,11 +13,11 @@ from __future__ import annotations
 import numpy as np
 
 from ..._errors import InvalidInputError
-from .._closed_form import wrap_angles
-from .._problem import Problem
-from .._reasons import fit_into_limits
-from .._recognize import closed_form_structure
-from ._many import ik_all_many
+from ..batch._many import ik_all_many
+from ..closed_form._ik_all import wrap_angles
+from ..closed_form._recognize import closed_form_structure
+from ..model._problem import Problem
+from ._reasons import fit_into_limits
 
 __all__ = ["closed_form_starts", "MOST_BRANCHES"]
 
@@ -70,8 +70,8 @@ def closed_form_starts(
     Examples
     --------
     >>> from robotconf.presets import preset
-    >>> from robotconf.inverse_kinematics._problem import make_problem
-    >>> from robotconf.inverse_kinematics._targets import check_targets
+    >>> from robotconf.inverse_kinematics.model._problem import make_problem
+    >>> from robotconf.inverse_kinematics.model._targets import check_targets
     >>> arm = preset("planar_2r", l1=1, l2=1)
     >>> problem = make_problem(arm, check_targets([1, 1, 0], "position"),
     ...                        np.array([1.0, 1, 1, 0, 0, 0]), 1e-9, 1e-9)

@@ -20,7 +20,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..kinematics import Robot
+from ...kinematics import Robot
 from ._problem import Problem, make_problem
 from ._targets import Targets
 

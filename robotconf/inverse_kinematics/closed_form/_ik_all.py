@@ -14,15 +14,15 @@ from typing import Any
 
 import numpy as np
 
-from .._errors import InvalidInputError
-from .._validation import as_float_array, check_finite_number, one_line
-from ._chain_axes import ChainAxes
+from ..._errors import InvalidInputError
+from ..._validation import as_float_array, check_finite_number, one_line
+from ..geometry._chain_axes import ChainAxes
+from ..geometry._subproblems import perp, rotation
 from ._elbow import solve_elbow
 from ._planar import solve_planar
 from ._recognize import GAP_TOL, NotClosedForm, closed_form_structure, refuse
 from ._solutions import Candidates, IKSolutions
 from ._spherical_wrist import solve_spherical_wrist
-from ._subproblems import perp, rotation
 from ._ur import solve_ur
 
 __all__ = [

@@ -1,6 +1,6 @@
 """The closest configuration: a second-order descent of the error, for targets not met.
 
-Damped least squares (:mod:`robotconf.inverse_kinematics._lm`) models the error as linear
+Damped least squares (:mod:`robotconf.inverse_kinematics.numeric._lm`) models the error as linear
 in the joints. That is exact enough on the way to a solution, where the error goes to
 zero, but not where it cannot: the closest configuration to a target out of reach is a
 singular one (the arm stretched towards it, or folded), where the first-order model
@@ -10,7 +10,7 @@ pointing straight away from the target: every joint motion is orthogonal to the 
 does not move at all.
 
 So a run that did not meet its target continues here, with the true curvature of
-``E = ½‖e‖²`` in the solver's units (:mod:`robotconf.inverse_kinematics._problem`):
+``E = ½‖e‖²`` in the solver's units (:mod:`robotconf.inverse_kinematics.model._problem`):
 the gradient is ``g = −Jᵀe`` and the Hessian ``H = JᵀJ − Σ_k e_k ∇²e_k`` comes from
 central differences of the gradient (steps of 1e-6 rad or robot sizes: one chain pass
 for all 2m neighbours of all runs at once). Each step is Newton's, taken in the
@@ -33,8 +33,8 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..model._problem import Problem
 from ._lm import CONVERGED, ITERATION_LIMIT, STALLED, STATIONARY, blocked_joints
-from ._problem import Problem
 
 __all__ = ["Closest", "descend", "LOCAL_MINIMUM_RATIO", "CHUNK"]
 

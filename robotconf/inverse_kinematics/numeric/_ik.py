@@ -2,16 +2,16 @@
 
 :func:`ik` validates, then runs the batched damped least squares of
 :mod:`._lm` from up to ``seeds`` starts per target — ``q0`` first, then (an arm with a
-closed form) the closed-form solutions nearest ``q0`` (:mod:`.batch`), then the same
+closed form) the closed-form solutions nearest ``q0`` (:mod:`._starts`), then the same
 random configurations for every target — and keeps the first converged run (or the
 closest one). Each start runs within the joint ranges; where all of them fail and some
 joint is clipped (not a full-turn revolute), the starts run again without the ranges, and
 a solution whose revolute joints fit the ranges after whole turns counts as converged
-(:mod:`robotconf.inverse_kinematics._search` runs them in waves).
+(:mod:`robotconf.inverse_kinematics.numeric._search` runs them in waves).
 
 Targets that still fail are diagnosed, in this order:
 
-1. **unreachable**: outside the reach shell (:mod:`robotconf.inverse_kinematics._reach`), a proof;
+1. **unreachable**: outside the reach shell (:mod:`..model._reach`), a proof;
 2. **joint limit**: a run without the ranges converged, but no whole-turn twin of its
    solution fits them; the joints past their limits are named;
 3. **singular**: the Jacobian at the final configuration lost rank against the robot's
@@ -28,14 +28,16 @@ from typing import Any
 
 import numpy as np
 
-from .._budget import check_memory
-from .._errors import InvalidInputError
-from .._validation import one_line
-from ..kinematics import Robot
+from ..._budget import check_memory
+from ..._errors import InvalidInputError
+from ..._validation import one_line
+from ...kinematics import Robot
+from ..model._problem import Problem, make_problem, robot_model
+from ..model._reach import Reach
+from ..model._structure import cached_rank, rank, warn_if_overconstrained
+from ..model._targets import check_mask, check_mode, check_options, check_start, check_targets
 from ._closest import descend
 from ._lm import CONVERGED, STALLED, solve
-from ._problem import Problem, make_problem, robot_model
-from ._reach import Reach
 from ._reasons import (
     SINGULAR_TOL,
     beyond_reach_message,
@@ -48,9 +50,7 @@ from ._reasons import (
 )
 from ._result import IKResult, single_or_batch
 from ._search import WAVE_RUNS, Search, search
-from ._structure import cached_rank, rank, warn_if_overconstrained
-from ._targets import check_mask, check_mode, check_options, check_start, check_targets
-from .batch import closed_form_starts
+from ._starts import closed_form_starts
 
 __all__ = ["ik", "ik_bytes"]
 

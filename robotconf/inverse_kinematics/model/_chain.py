@@ -27,7 +27,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from ..kinematics import Robot, cos_sin
+from ...kinematics import Robot, cos_sin
 
 __all__ = ["Chain", "Workspace", "compile_chain"]
 

@@ -25,9 +25,9 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ._chain_axes import AxisJoint, ChainAxes
+from ..geometry._chain_axes import AxisJoint, ChainAxes
+from ..geometry._subproblems import angle_about, cross, perp, turn_to_level
 from ._solutions import Candidates
-from ._subproblems import angle_about, cross, perp, turn_to_level
 
 __all__ = [
     "ELBOW_WORDS",

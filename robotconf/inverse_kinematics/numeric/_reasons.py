@@ -1,6 +1,6 @@
 """Why a target failed, in words: out of reach, at a singularity, past a joint limit.
 
-The numbers behind each sentence come from :mod:`robotconf.inverse_kinematics._numeric`; this module
+The numbers behind each sentence come from :mod:`._ik`; this module
 finds the joints to name (from the Jacobian's null space, or from a solution outside the
 ranges) and writes the sentences.
 """
@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ._problem import FULL_TURN, Problem
-from ._reach import Reach
+from ..model._problem import FULL_TURN, Problem
+from ..model._reach import Reach
 
 __all__ = [
     "fit_into_limits",

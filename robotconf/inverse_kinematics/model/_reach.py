@@ -39,7 +39,7 @@ from itertools import product
 
 import numpy as np
 
-from ..kinematics import Robot
+from ...kinematics import Robot
 
 __all__ = ["Reach", "Cylinder", "reach_shell"]
 

@@ -13,7 +13,7 @@ least-squares step (the rows are only rotated), so the solver then leaves both i
 base frame and saves the products; :attr:`Problem.base_frame` says which frame holds.
 
 What depends only on the robot (its size, ranges, the folded chain of
-:mod:`robotconf.inverse_kinematics._chain`, its reach shell) is computed once per robot and kept
+:mod:`._chain`, its reach shell) is computed once per robot and kept
 (:func:`robot_model`), since an interactive caller solves for the same robot many times.
 """
 
@@ -25,7 +25,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from ..kinematics import Robot, characteristic_length
+from ...kinematics import Robot, characteristic_length
 from ._chain import Chain, Pass, Workspace, compile_chain
 from ._reach import Reach, reach_shell
 from ._rotation import rotation_vector_last
