@@ -279,7 +279,8 @@ def _face_violations(imports: list[Import]) -> list[str]:
     wrong = []
     for imp in imports:
         target = imp.target.split(".")
-        if imp.target in SHARED_BASE or len(target) < 3 or not target[2].startswith("_"):
+        # a private module anywhere below the folder (kinematics.robot._robot too)
+        if imp.target in SHARED_BASE or not any(part.startswith("_") for part in target[2:]):
             continue
         if _layer_name(imp.source) != target[1]:
             wrong.append(_where(imp))
@@ -325,6 +326,7 @@ def test_the_core_imports_only_numpy_at_module_level():
     ("code", "check"),
     [
         ("from ..kinematics._robot import Robot\n", _face_violations),
+        ("from ..kinematics.robot._robot import Robot\n", _face_violations),
         ("import robotconf\n", _root_violations),
         ("from ..panel import configurator\n", _climbing_down_violations),
         ("def plot():\n    from ..scene import view\n", lambda found: list(_climbing(found))),

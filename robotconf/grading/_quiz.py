@@ -31,7 +31,7 @@ from typing import Any
 
 from .._errors import InvalidInputError
 from ..teaching.exercises import registered
-from ..teaching.reading._tolerance import ROUNDING_RULE
+from ..teaching.reading import ROUNDING_RULE
 from ._course import exercises_notebook, find_course, lesson_names
 from ._notebook_cells import cell_source, find_exercises, read_notebook
 from .rubric._weights import _tables

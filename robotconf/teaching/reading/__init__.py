@@ -21,6 +21,7 @@ Numbers as hints quote them
 from ._parser import DEFAULT_SYMBOL_NAMES, ParserLimits, parse_expression, parse_matrix
 from ._shown import format_decimal, number_text, show_entry, show_expected
 from ._slips import find_slip
+from ._tolerance import ROUNDING_RULE
 from ._wrapper import short_traceback
 
 __all__ = [
@@ -34,4 +35,5 @@ __all__ = [
     "number_text",
     "show_entry",
     "show_expected",
+    "ROUNDING_RULE",
 ]
