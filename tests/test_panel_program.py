@@ -315,6 +315,28 @@ def test_ptp_coordinates_follow_an_added_and_a_removed_module() -> None:
     assert panel.program is not None and panel.program.robot == panel.robot
 
 
+def test_a_joint_set_to_none_keeps_its_own_value_in_every_ptp(tmp_path: Any) -> None:
+    # A taught PTP holds q2 = 20°; module 2, moved on to 40°, then becomes "none": the
+    # program cannot move it, so the PTP takes the robot's own q2 (40°), and the bound file
+    # goes on saving.
+    path = tmp_path / "work.json"
+    panel = Configurator(str(path), scene_factory=FakeScene)
+    panel.apply(act.LoadPreset("paper"))
+    panel.apply(act.SelectTab("program"))
+    set_q(panel, [10, 20, 30])
+    ui(panel, "program.add").click()
+    taught = moves(panel)[0].q
+    set_q(panel, [0, 40, 0])  # the arm moved on: module 2 now stands at 40°
+    ui(panel, "modules[1].kind").choose("none")
+    own = panel.robot.q[1]
+    assert own == pytest.approx(math.radians(40)) and taught[1] == pytest.approx(math.radians(20))
+    assert moves(panel)[0].q == (taught[0], own, taught[2])
+    assert panel.errors == {} and panel.program is not None
+    assert json.loads(path.read_text("utf-8"))["program"]["moves"][0]["q"][1] == own
+    panel.undo()  # the taught value comes back with the joint
+    assert moves(panel)[0].q == taught and panel.robot.modules[1].kind == "Ry"
+
+
 def test_the_taught_points_are_marked_while_the_tab_shows() -> None:
     panel = program_panel()
     taught_line(panel)

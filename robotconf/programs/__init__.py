@@ -10,7 +10,8 @@ Programs
     :class:`PTP`, :class:`LIN`, :class:`CIRC`, :class:`Wait`, :class:`Move`
 Results
     :class:`ProgramMotion` (a :class:`~robotconf.motion.Motion` with its moves),
-    :class:`ProgramReport`, :class:`Violation`, :data:`VIOLATIONS`, :class:`Segment`
+    :class:`ProgramReport`, :class:`Violation`, :data:`VIOLATIONS`, :class:`Segment`,
+    :func:`moving_joints` (which coordinates a program moves)
 Profiles and paths
     :class:`Profile`, :func:`trapezoidal`, :func:`quintic`, :data:`PROFILES`,
     :class:`CartesianPath`, :func:`line_path`, :func:`arc_path`, :class:`Limits`
@@ -24,6 +25,7 @@ The largest joint step, 0.5 rad at the default 1 rad/s and 2 rad/s², takes
 1.5
 """
 
+from ._chain import moving_joints
 from ._limits import LIMIT_NAMES, Limits, resolve_limits
 from ._motion import ProgramMotion
 from ._moves import CIRC, LIN, MOVE_TYPES, ORIENTATIONS, PTP, Move, Wait
@@ -53,6 +55,7 @@ __all__ = [
     "Violation",
     "VIOLATIONS",
     "Segment",
+    "moving_joints",
     # profiles and paths
     "Profile",
     "PROFILES",

@@ -39,7 +39,7 @@ from ._rotation import rotation_error
 if TYPE_CHECKING:
     from ..kinematics import Robot
 
-__all__ = ["Chain", "make_chain", "kinematics", "solve", "bias", "pose_error"]
+__all__ = ["Chain", "make_chain", "moving_joints", "kinematics", "solve", "bias", "pose_error"]
 
 #: Relative size below which a singular value counts as zero when finding the rank.
 RANK_TOL = 1e-9
@@ -84,6 +84,28 @@ def _rank(matrices: np.ndarray) -> int:
     return int(np.max(np.sum(sigma > RANK_TOL * np.maximum(sigma[:, :1], 1e-300), axis=1)))
 
 
+def moving_joints(robot: Robot) -> np.ndarray:
+    """Which coordinates a program moves, shape (n,) bool: revolute or prismatic joints
+    among the active modules, not a held ``(constant)`` module. The others keep the
+    robot's own values in every move.
+
+    >>> import robotconf as rc
+    >>> arm = rc.Robot([rc.Module("Rz"), rc.Module("none", (1, 0, 0)), rc.Module("Tx")])
+    >>> moving_joints(arm).tolist()
+    [True, False, True]
+    """
+    types, names = robot.joint_types, robot.module_names
+    return np.array(
+        [
+            j < robot.active
+            and types[j] in ("revolute", "prismatic")
+            and not names[j].endswith("(constant)")
+            for j in range(robot.n)
+        ],
+        dtype=bool,
+    )
+
+
 def make_chain(robot: Robot, start: np.ndarray) -> Chain:
     """The chain of ``robot``; ranks are taken at ``start`` and 4 fixed random samples.
 
@@ -94,18 +116,9 @@ def make_chain(robot: Robot, start: np.ndarray) -> Chain:
     6
     """
     n = robot.n
-    types, names = robot.joint_types, robot.module_names
-    moving = np.array(
-        [
-            j < robot.active
-            and types[j] in ("revolute", "prismatic")
-            and not names[j].endswith("(constant)")
-            for j in range(n)
-        ],
-        dtype=bool,
-    )
+    moving = moving_joints(robot)
     length = characteristic_length(robot)
-    prismatic = np.array([t == "prismatic" for t in types])
+    prismatic = np.array([t == "prismatic" for t in robot.joint_types])
     column_scale = np.where(prismatic, length, 1.0) * moving
     limits = robot.joint_limits()
     rng = np.random.default_rng(0)

@@ -12,7 +12,7 @@ from collections.abc import Hashable, Sequence
 
 from ...kinematics import Robot
 from ..state import PanelState, ReachState, remap
-from ..state._program_draft import remapped
+from ..state._program_draft import held, remapped
 
 __all__ = ["Action", "with_robot", "Order"]
 
@@ -80,6 +80,8 @@ def with_robot(
     program = document.program
     if program.moves and (order is not None or _misfits(program, n)):
         program = remapped(program, robot, order)
+    if program.moves:
+        program = held(program, robot)
     changes: dict[str, object] = {}
     if new_robot:
         changes["reach"] = ReachState(mode=state.reach.mode, show_all=state.reach.show_all)

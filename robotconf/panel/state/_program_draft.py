@@ -20,7 +20,7 @@ import numpy as np
 
 from ..._errors import InvalidInputError
 from ...kinematics import Robot
-from ...programs import CIRC, LIN, PTP, Move, Program, Wait
+from ...programs import CIRC, LIN, PTP, Move, Program, Wait, moving_joints
 
 __all__ = [
     "ProgramDraft",
@@ -32,6 +32,7 @@ __all__ = [
     "edited",
     "taught",
     "remapped",
+    "held",
     "end_points",
     "point_of",
 ]
@@ -272,6 +273,31 @@ def edited(move: Move, name: str, value: Any, component: int | None = None) -> M
     values = list(getattr(move, name))
     values[component] = value
     return replace(move, **{name: tuple(values)})
+
+
+def held(draft: ProgramDraft, robot: Robot) -> ProgramDraft:
+    """The draft with every PTP's coordinates of joints a program does not move (a module
+    set to none or fixed, an inactive one) at the robot's own values: the program cannot
+    move them, and the core refuses a PTP that asks it to. The same draft when nothing
+    changes.
+
+    >>> import robotconf as rc
+    >>> arm = rc.Robot([rc.Module("Rz"), rc.Module("none", (1, 0, 0), q=0.0)])
+    >>> held(ProgramDraft((PTP(q=(0.5, 0.7)),)), arm).moves[0].q
+    (0.5, 0.0)
+    """
+    still = ~moving_joints(robot)
+    if not still.any():
+        return draft
+    own = robot.q
+    moves, changed = [], False
+    for move in draft.moves:
+        if isinstance(move, PTP) and move.q is not None and len(move.q) == robot.n:
+            q = tuple(float(own[i]) if still[i] else move.q[i] for i in range(robot.n))
+            if q != tuple(move.q):
+                move, changed = replace(move, q=q), True
+        moves.append(move)
+    return draft.with_moves(moves) if changed else draft
 
 
 def remapped(draft: ProgramDraft, robot: Robot, order: Sequence[int | None] | None) -> ProgramDraft:
