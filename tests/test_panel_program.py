@@ -333,6 +333,8 @@ def test_a_joint_set_to_none_keeps_its_own_value_in_every_ptp(tmp_path: Any) -> 
     assert moves(panel)[0].q == (taught[0], own, taught[2])
     assert panel.errors == {} and panel.program is not None
     assert json.loads(path.read_text("utf-8"))["program"]["moves"][0]["q"][1] == own
+    box = panel.program_tab.form.control("program.moves[0].q1")  # no number in degrees
+    assert box["disabled"] and box["text"] == "—"
     panel.undo()  # the taught value comes back with the joint
     assert moves(panel)[0].q == taught and panel.robot.modules[1].kind == "Ry"
 

@@ -55,6 +55,9 @@ def _boxes(
         key = f"{prefix}.{name}" if single else f"{prefix}.{name}{k}"
         shown = short_number(units.to_shown(float(value), unit)) if np.isfinite(value) else value
         error = feedback.message(key)
+        held = bool(disabled and disabled[k])
+        # A joint the program cannot move has no value to show in the row's unit: a dash.
+        typed = "—" if held else (feedback.typed(key) if error else None)
         boxes.append(
             number(
                 key,
@@ -65,9 +68,9 @@ def _boxes(
                 slider=False,
                 rev=rev,
                 width="66px",
-                text=feedback.typed(key) if error else None,
+                text=typed,
                 note=message(error),
-                disabled=bool(disabled and disabled[k]),
+                disabled=held,
                 css_class=f"robotconf-program-{name}",
             )
         )
@@ -157,7 +160,7 @@ def move_rows(
             *_fields(prefix, move, robot, units, speed, feedback, rev),
             button(
                 f"{prefix}.teach",
-                "⌖ teach",
+                "◎ teach",
                 title=_TEACH_TIPS[move.kind],
                 disabled=isinstance(move, Wait),
                 css_class="robotconf-program-teach",
@@ -167,7 +170,7 @@ def move_rows(
             cells.append(
                 button(
                     f"{prefix}.via",
-                    "⌖ via",
+                    "◎ via",
                     title="teach the via point: where the end effector is now",
                 )
             )

@@ -138,7 +138,7 @@ class ReachView:
                     ),
                     button(
                         "reach.from_current",
-                        "⌖ from current pose",
+                        "◎ from current pose",
                         title="set the target to where the end effector is now",
                         css_class="robotconf-reach-from-current",
                     ),
