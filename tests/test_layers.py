@@ -27,7 +27,8 @@ import pytest
 
 PACKAGE = Path(__file__).resolve().parents[1] / "robotconf"
 
-#: Lowest first. ``_base`` is the shared ``robotconf._errors``, ``_validation`` and ``_budget``.
+#: Lowest first. ``_base`` is the shared ``robotconf._errors``, ``_validation``,
+#: ``_json_fields`` and ``_budget``.
 LAYERS: tuple[tuple[str, ...], ...] = (
     ("_base",),
     ("kinematics", "signals"),
@@ -42,7 +43,12 @@ LAYERS: tuple[tuple[str, ...], ...] = (
     ("__init__", "__main__"),
 )
 PRESENTATION = ("plots", "scene", "panel", "cli", "grading", "report", "cell_designer")
-SHARED_BASE = ("robotconf._errors", "robotconf._validation", "robotconf._budget")
+SHARED_BASE = (
+    "robotconf._errors",
+    "robotconf._validation",
+    "robotconf._json_fields",
+    "robotconf._budget",
+)
 
 #: The only places where the core reaches up a layer: methods that hand over to a richer
 #: layer when called (a robot writes its file, a motion draws itself), named

@@ -17,7 +17,8 @@ from typing import Any
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import check_json_object, one_line
+from .._json_fields import check_json_object
+from .._validation import one_line
 from ..kinematics import Robot
 from ..programs import MAX_MOVES, Move, Program, Wait
 from ._program_schema import _PROGRAM_KEYS, _move, _plain, _value

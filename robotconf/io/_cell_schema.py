@@ -19,7 +19,8 @@ from typing import Any, Literal, overload
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import check_json_number, check_json_object, one_line
+from .._json_fields import check_json_number, check_json_object
+from .._validation import one_line
 from ..cell import (
     MAX_ENTRIES,
     NAME_SEPARATOR,

@@ -18,7 +18,8 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from .._errors import InvalidInputError
-from .._validation import Rejected, check_json_object, one_line
+from .._json_fields import Rejected, check_json_object
+from .._validation import one_line
 from ..motion import SimulationSettings
 from ..programs import Program
 from ..signals import Constant, Signal, signal_from_dict

@@ -13,7 +13,8 @@ from dataclasses import fields
 from typing import TYPE_CHECKING, Any
 
 from .._errors import InvalidInputError
-from .._validation import check_json_number, check_json_object, one_line
+from .._json_fields import check_json_number, check_json_object
+from .._validation import one_line
 from ..programs import LIMIT_NAMES, MAX_MOVES, MOVE_TYPES, Program
 
 if TYPE_CHECKING:

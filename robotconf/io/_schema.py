@@ -11,7 +11,8 @@ from collections.abc import Mapping
 from typing import TYPE_CHECKING, Any
 
 from .._errors import InvalidInputError
-from .._validation import check_json_number, check_json_object, one_line
+from .._json_fields import check_json_number, check_json_object
+from .._validation import one_line
 from ..kinematics import MAX_MODULES, MAX_NAME_CHARS, MODULE_KINDS, DHLink, Module
 from ..motion import SimulationSettings
 

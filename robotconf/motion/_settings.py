@@ -15,7 +15,8 @@ from typing import Any
 import numpy as np
 
 from .._errors import InvalidInputError
-from .._validation import check_finite_number, check_integer, check_json_number, check_json_object
+from .._json_fields import check_json_number, check_json_object
+from .._validation import check_finite_number, check_integer
 from ._time_grid import (
     DEFAULT_TIME_STEP,
     MAX_TIME_SAMPLES,

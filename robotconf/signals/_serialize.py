@@ -12,7 +12,8 @@ from dataclasses import fields
 from typing import Any
 
 from .._errors import InvalidInputError
-from .._validation import Rejected, one_line
+from .._json_fields import Rejected
+from .._validation import one_line
 from ._base import Affine, Signal, Sum
 from ._profiles import Cubic, Quintic, Trapezoidal
 from ._repeating import MAX_TABLE_POINTS, RepeatingSequence
