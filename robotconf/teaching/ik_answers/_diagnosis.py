@@ -112,9 +112,7 @@ def rounded_past_the_rule(problem: IKProblem, q: np.ndarray, subject: str) -> Fi
     if spread > ROUNDING_GAP:
         return None
     solution = solutions.q[row]
-    near = solution + np.where(
-        problem.revolute, 2 * math.pi * np.round((q - solution) / (2 * math.pi)), 0.0
-    )
+    near = problem.turned_to(solution, q)
     allowed = problem.tol * np.maximum(SCALE_FLOOR, np.abs(near))
     coarse = problem.moving & (problem.gap(q, near) > allowed)
     if not coarse.any():
@@ -133,9 +131,7 @@ def _rounded(problem: IKProblem, q: np.ndarray, subject: str) -> Finding | None:
     if found is None:
         return None
     solution = found[0]
-    near = solution + np.where(
-        problem.revolute, 2 * math.pi * np.round((q - solution) / (2 * math.pi)), 0.0
-    )
+    near = problem.turned_to(solution, q)
     gap = problem.gap(q, near)
     exact = gap <= 1e-9 * max(1.0, problem.size)
     # Rounding to one decimal moves an angle by 0.05 at most; more is another mistake.

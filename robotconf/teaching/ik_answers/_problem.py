@@ -150,6 +150,11 @@ class IKProblem:
         distance, turn = self.misses(q)
         return np.asarray((distance <= self.reach_tol) & (turn <= self.tol))
 
+    def turned_to(self, solution: np.ndarray, q: np.ndarray) -> np.ndarray:
+        """``solution`` with each revolute joint turned by whole turns to lie nearest ``q``."""
+        turns = np.round((q - solution) / (2 * math.pi))
+        return solution + np.where(self.revolute, 2 * math.pi * turns, 0.0)
+
     def gap(self, a: np.ndarray, b: np.ndarray) -> np.ndarray:
         """Per-joint differences, revolute joints modulo a full turn, ignored coordinates 0."""
         difference = np.asarray(a, dtype=float) - np.asarray(b, dtype=float)
