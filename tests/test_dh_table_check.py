@@ -485,3 +485,19 @@ def test_a_long_table_gets_the_mistake_in_its_row():
     result = rc.check_dh_table(table, robot)
     assert (result.diagnosis, result.wrong_joints[0]) == ("alpha_sign", 42)
     assert result.hints[0].startswith("Row 41: check the sign of α41.")
+
+
+def test_a_long_wrong_table_is_judged_within_the_repair_budget(monkeypatch):
+    """64 revolute rows with their lengths permuted: no single repair or exchange explains
+    them, and the check tries a bounded number of tables (each builds and samples a robot),
+    not every pair of rows (about 4,000)."""
+    from robotconf.teaching.checks import _dh_repairs
+
+    tried = []
+    compare = _dh_repairs.compare
+    monkeypatch.setattr(_dh_repairs, "compare", lambda *args: tried.append(1) or compare(*args))
+    robot = rc.Robot([rc.Module("Rz", a=(1 + 0.01 * i, 0, 0)) for i in range(64)])
+    rows = [(f"q{i + 1}", 0, 1 + 0.01 * ((i * 7) % 64), 0) for i in range(64)]
+    result = rc.check_dh_table(rows, robot)
+    assert not result.ok
+    assert len(tried) <= 3 * _dh_repairs._MAX_REPAIRS

@@ -228,19 +228,27 @@ def _exchanged_lengths(
     ref: Reference, rows: tuple[DHRow, ...], convention: str, end_effector: Any
 ) -> tuple[str, tuple[int, int]] | None:
     """Two rows' d (or two rows' a) written in each other's place: two link lengths
-    exchanged. Returns the code and the two 0-based rows, or None."""
+    exchanged. Returns the code and the two 0-based rows, or None. Neighbouring rows are
+    tried first, at most :data:`_MAX_REPAIRS` exchanges (a long table stays fast)."""
+    pairs = sorted(
+        ((i, j) for i in range(len(rows)) for j in range(i + 1, len(rows))),
+        key=lambda pair: (pair[1] - pair[0], pair[0]),
+    )
+    tried = 0
     for code, column in (("a_value", 2), ("d_value", 1)):
-        for i in range(len(rows)):
-            for j in range(i + 1, len(rows)):
-                if np.isclose(rows[i][column], rows[j][column]):
-                    continue
-                field = "da"[column - 1]
-                table = list(rows)
-                table[i] = _with(rows[i], **{field: float(rows[j][column])})
-                table[j] = _with(rows[j], **{field: float(rows[i][column])})
-                match = compare(ref, tuple(table), convention, end_effector)
-                if match is not None and match.ok:
-                    return code, (i, j)
+        field = "da"[column - 1]
+        for i, j in pairs:
+            if np.isclose(rows[i][column], rows[j][column]):
+                continue
+            if tried == _MAX_REPAIRS:
+                return None
+            tried += 1
+            table = list(rows)
+            table[i] = _with(rows[i], **{field: float(rows[j][column])})
+            table[j] = _with(rows[j], **{field: float(rows[i][column])})
+            match = compare(ref, tuple(table), convention, end_effector)
+            if match is not None and match.ok:
+                return code, (i, j)
     return None
 
 
